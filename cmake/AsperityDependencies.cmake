@@ -1,0 +1,29 @@
+# Every dependency is found through find_package or pkg-config from Debian's packages.
+find_package(Threads REQUIRED)
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(nlohmann_json 3.10 REQUIRED)
+find_package(CLI11 REQUIRED)
+
+find_package(meshoptimizer REQUIRED)
+find_package(tinyobjloader REQUIRED)
+find_package(PkgConfig REQUIRED)
+# Bullet (single precision, as Debian builds it) for broadphase and convex contacts.
+pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet)
+
+# stb ships headers and a pkg-config file; PNG encode/decode is compiled once in the core.
+find_path(STB_INCLUDE_DIR stb_image.h PATH_SUFFIXES stb REQUIRED)
+
+if(ASPERITY_WITH_GL)
+  pkg_check_modules(EPOXY REQUIRED IMPORTED_TARGET epoxy)
+  pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)
+  pkg_check_modules(GLFW REQUIRED IMPORTED_TARGET glfw3)
+  pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
+endif()
+
+if(ASPERITY_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+  include(GoogleTest)
+endif()
+if(ASPERITY_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()

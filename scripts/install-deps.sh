@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Installs the Debian packages Asperity needs that are not installed yet (apt-get only).
+# Usage: scripts/install-deps.sh   (as root, or with sudo available)
+set -euo pipefail
+
+packages=(
+  # toolchain
+  build-essential cmake pkg-config
+  # core library
+  libeigen3-dev libstb-dev nlohmann-json3-dev libcli11-dev libbullet-dev
+  libmeshoptimizer-dev libtinyobjloader-dev
+  # tests and benchmarks
+  libgtest-dev libgmock-dev libbenchmark-dev
+  # OpenGL through EGL (Mesa's llvmpipe when there is no GPU), viewer, videos
+  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev libimgui-dev
+  xvfb xauth ffmpeg
+  # meshes used by scenes (the Stanford bunny)
+  glmark2-data
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "Installing missing Debian packages: ${missing[*]}"
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "error: need root (or sudo) to install: ${missing[*]}" >&2; exit 1; }
+  sudo="sudo"
+fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,31 @@
+// Helpers shared by every test: one tolerance helper and a way to run the CLI.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace asperity::test {
+
+// Relative-or-absolute closeness: |a - b| <= abs_tol + rel_tol * |b|.
+::testing::AssertionResult near(double actual, double expected, double rel_tol,
+                                double abs_tol = 0.0);
+
+// The result of running a command line.
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+// Runs build/bin/asperity with the given arguments (each is shell-quoted).
+CommandResult runCli(const std::vector<std::string>& args);
+
+// A fresh, empty temporary directory for one test; removed by the OS, not by the test.
+std::string tempDir(const std::string& tag);
+
+// Path of a file in the repository.
+std::string sourcePath(const std::string& relative);
+
+}  // namespace asperity::test
