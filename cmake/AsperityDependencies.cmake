@@ -9,6 +9,8 @@ find_package(tinyobjloader REQUIRED)
 find_package(PkgConfig REQUIRED)
 # Bullet (single precision, as Debian builds it) for broadphase and convex contacts.
 pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet)
+# cairo draws the command-line tool's plots (one routine, SVG and PNG surfaces).
+pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)
 
 # stb ships headers and a pkg-config file; PNG encode/decode is compiled once in the core.
 find_path(STB_INCLUDE_DIR stb_image.h PATH_SUFFIXES stb REQUIRED)

@@ -9,6 +9,8 @@ packages=(
   # core library
   libeigen3-dev libstb-dev nlohmann-json3-dev libcli11-dev libbullet-dev
   libmeshoptimizer-dev libtinyobjloader-dev
+  # command-line tool plots (SVG and PNG) and their font
+  libcairo2-dev fonts-dejavu-core
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # OpenGL through EGL (Mesa's llvmpipe when there is no GPU), viewer, videos
