@@ -22,10 +22,12 @@ struct DirectionalMu {
   int count = 0;
   std::array<float, kMaxDirections> mu{};
 
-  // All directions set to the same value (isotropic).
+  // All directions set to the same value (isotropic). Throws for n outside [4, 64].
   static DirectionalMu uniform(int n, float value);
-  // The coefficient along an arbitrary in-plane angle (radians from t toward b): linear
-  // interpolation of the star polygon's radius between neighbouring samples.
+  // The coefficient along an arbitrary in-plane angle (radians from t toward b): the radius
+  // of the star polygon whose edges interpolate linearly between neighbouring samples
+  // mu_k d_k (so BoxLimit::fromDirectional and PolygonLimit agree on the axes). Exactly
+  // mu_k on a sample direction. Throws asperity::Error for a count outside [4, 64].
   double along(double angle) const;
 };
 
