@@ -1,0 +1,152 @@
+// The simulation world: bodies, joints, drivers and the step (docs/step.md).
+//
+// World::step runs, in order: drivers (gravity, springs, loads) -> collide -> contact frames
+// (SPEC 5) -> friction coefficients (SPEC 3) -> solve (PGS, SPEC 4) -> integrate. Each stage
+// is timed into StepProfile. Results (contacts, profile) stay valid until the next step.
+// z is up everywhere in Asperity.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "asperity/collision/contact.hpp"
+#include "asperity/dynamics/body.hpp"
+#include "asperity/dynamics/driver.hpp"
+#include "asperity/dynamics/joint.hpp"
+#include "asperity/friction/limit_surface.hpp"
+#include "asperity/sampler/friction_provider.hpp"
+
+namespace asperity {
+
+class CollisionDetector;
+class ContactSolver;
+
+// How each contact's tangent t is chosen (SPEC 5).
+enum class FrameMode {
+  World,   // world_axis projected on the contact plane (fallback_axis when that vanishes)
+  Body,    // body-local frame_axis of A, else of B, else the frame callback, else World
+  Auto,    // along the relative sliding velocity after a few frictionless iterations
+  Texture  // along the +u direction of B's texture (planes and boxes), else World
+};
+
+struct WorldSettings {
+  double dt = 0.01;  // s
+  int iterations = 20;
+  Vec3 gravity = Vec3(0.0, 0.0, -9.81);  // m/s^2
+  LimitSurfaceKind limit_surface = LimitSurfaceKind::Box;
+  FrameMode frame_mode = FrameMode::World;
+  Vec3 world_axis = Vec3::UnitX();
+  Vec3 fallback_axis = Vec3::UnitY();
+  FrictionSettings friction;
+  int auto_frame_iterations = 5;   // frictionless PGS iterations of frame mode Auto
+  double auto_frame_speed = 1e-3;  // m/s; slower contacts keep the world frame
+  bool warm_starting = true;
+  double baumgarte = 0.2;             // fraction of the position error removed per step (1)
+  double linear_slop = 0.0;           // m of penetration left alone; 0 = automatic from body sizes
+  double contact_margin = 0.0;        // m, handed to collision; 0 = automatic
+  double max_correction_speed = 2.0;  // m/s, cap of the position-correction velocity
+};
+
+// Wall-clock time of each stage of the last step (ms), and what it saw.
+struct StepProfile {
+  double drivers_ms = 0.0;
+  double collide_ms = 0.0;
+  double frames_ms = 0.0;
+  double friction_ms = 0.0;   // whole friction stage (patch + averaging + rest)
+  double patch_ms = 0.0;      // provider's patch time (paper Table 1)
+  double averaging_ms = 0.0;  // provider's averaging time (paper Table 1)
+  double solve_ms = 0.0;
+  double integrate_ms = 0.0;
+  double total_ms = 0.0;
+  int contacts = 0;
+  int fallbacks = 0;  // contacts whose patch was empty (mu = mu0)
+};
+
+class World {
+ public:
+  // Per-world hook of frame mode Body: returns the desired tangent t (need not be unit or in
+  // the contact plane; it is projected).
+  using FrameCallback = std::function<Vec3(const World&, const Contact&)>;
+
+  explicit World(WorldSettings settings = {});
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  // Adds a body; mass and inertia come from its shapes (geometry/mass.hpp). Throws
+  // asperity::Error naming the body for a dynamic body without volume or a bad pose.
+  BodyId createBody(const BodyDesc& desc);
+  // Adds a joint and returns its index. Throws asperity::Error for unknown bodies.
+  int createJoint(const JointDesc& desc);
+  // Adds a spring and returns its index. Throws asperity::Error for an unknown body.
+  int addSpring(const SpringDesc& desc);
+  // Adds a timed load. Throws asperity::Error for an unknown body.
+  void addLoad(const LoadDesc& desc);
+
+  // The friction stage (default: ConstantProvider with settings().friction.mu0).
+  void setFrictionProvider(std::unique_ptr<FrictionProvider> provider);
+  FrictionProvider& frictionProvider() { return *provider_; }
+  void setFrameCallback(FrameCallback callback) { frame_callback_ = std::move(callback); }
+
+  // Advances the world by settings().dt.
+  void step();
+
+  double time() const { return time_; }
+  int64_t stepCount() const { return steps_; }
+
+  std::span<const Body> bodies() const { return bodies_; }
+  Body& body(BodyId id);
+  const Body& body(BodyId id) const;
+  // The description a body was created from (scenes save it back).
+  const BodyDesc& bodyDesc(BodyId id) const;
+  // The body with this name, or kNoBody.
+  BodyId findBody(std::string_view name) const;
+
+  std::span<const JointDesc> joints() const { return joints_; }
+  std::span<SpringDesc> springs() { return springs_; }
+  std::span<const SpringDesc> springs() const { return springs_; }
+  std::span<const LoadDesc> loads() const { return loads_; }
+  // Position error of joint i (m): distance between the anchors, or from the target length.
+  double jointError(int index) const;
+
+  const std::vector<Contact>& contacts() const { return contacts_; }
+  const StepProfile& profile() const { return profile_; }
+  WorldSettings& settings() { return settings_; }
+  const WorldSettings& settings() const { return settings_; }
+
+  // FNV-1a over the bit patterns of every body's pose and velocities (determinism checks).
+  uint64_t stateHash() const;
+
+ private:
+  void applyDrivers();
+  void collide();
+  void computeFrames();
+  void computeFriction();
+  void solve();
+  void integrate();
+  double linearSlop() const;
+
+  WorldSettings settings_;
+  std::vector<Body> bodies_;
+  std::vector<BodyDesc> descs_;
+  std::vector<JointDesc> joints_;
+  std::vector<Quat> joint_rest_rotation_;  // fixed joints: q_a^-1 q_b at creation
+  std::vector<SpringDesc> springs_;
+  std::vector<LoadDesc> loads_;
+  std::vector<Contact> contacts_;
+  std::unique_ptr<CollisionDetector> collision_;
+  std::unique_ptr<ContactSolver> solver_;
+  std::unique_ptr<FrictionProvider> provider_;
+  FrameCallback frame_callback_;
+  StepProfile profile_;
+  bool bodies_changed_ = true;
+  double auto_slop_ = 0.0;
+  double time_ = 0.0;
+  int64_t steps_ = 0;
+};
+
+}  // namespace asperity
