@@ -1,0 +1,32 @@
+// Shared pieces of the `asperity` command-line tool: one registration function per subcommand
+// (each in its own file), the uniform error path, and number validators.
+//
+// Adding a subcommand: write apps/cli/<name>_command.cpp defining registerXCommand, declare it
+// below, and call it from main.cpp. Its callback throws asperity::Error on bad input; runCli
+// prints `asperity: error: <message>` (one line) and returns 1.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace asperity::cli {
+
+// Subcommands (apps/cli/<name>_command.cpp).
+void registerTextureCommand(CLI::App& app);
+void registerConeCommand(CLI::App& app);
+
+// Parses argv and runs the chosen subcommand's callback. Returns the process exit code:
+// 0 on success and for --help, 2 for a usage error (CLI11's message), 1 for any other error.
+// Every error is printed as one line `asperity: error: <message>` on stderr.
+int runCli(CLI::App& app, int argc, const char* const* argv);
+
+// Rejects NaN and infinities (CLI::Range lets NaN through). Use before a CLI::Range check:
+//   app.add_option("--mu-max", x)->check(finiteNumber())->check(CLI::Range(0.0, 1e3));
+CLI::Validator finiteNumber();
+// Accepts finite numbers > 0.
+CLI::Validator positiveNumber();
+
+// Prints `asperity: error: <message>` as one line on stderr (newlines become spaces).
+void printError(const std::string& message);
+
+}  // namespace asperity::cli
