@@ -1,0 +1,78 @@
+// Scenes are pure data: load a JSON file (docs/scene-format.md), instantiate a World from it,
+// save it back. Errors name the file and the JSON pointer of the culprit:
+//   scenes/x.json: /bodies/2/shapes/0/half_extents/1: must be a positive number, got -0.1
+// Units: metres, kilograms, seconds, radians inside the structs (degrees only in the JSON keys
+// whose names end in _deg). z is up.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <vector>
+
+#include "asperity/dynamics/body.hpp"
+#include "asperity/dynamics/driver.hpp"
+#include "asperity/dynamics/joint.hpp"
+#include "asperity/world/world.hpp"
+
+namespace asperity {
+
+// Joints, springs and loads name their bodies; instantiate() turns the names into BodyIds
+// (the BodyId fields of `desc` are ignored).
+struct SceneJoint {
+  std::string body_a;
+  std::string body_b;
+  JointDesc desc;
+};
+
+struct SceneSpring {
+  std::string body;
+  SpringDesc desc;
+};
+
+struct SceneLoad {
+  std::string body;
+  LoadDesc desc;
+};
+
+// A shape whose triangles come from an OBJ file: bodies[body].shapes[shape] (a ConvexHull or
+// TriangleMesh). instantiate() loads it; saving writes the file name back as written.
+struct SceneMesh {
+  size_t body = 0;
+  size_t shape = 0;
+  std::string file;    // as written in the scene: relative to base_dir, or absolute
+  double scale = 1.0;  // uniform scale applied to the OBJ's coordinates (1)
+  int simplify = 0;    // target triangle count; 0 = keep every triangle
+};
+
+struct SceneDesc {
+  WorldSettings settings;
+  std::string sampler = "cone";  // friction provider (frictionProviderNames())
+  std::vector<BodyDesc> bodies;  // shapes' normal maps unresolved (files / generator specs)
+  std::vector<SceneJoint> joints;
+  std::vector<SceneSpring> springs;
+  std::vector<SceneLoad> loads;
+  std::vector<SceneMesh> meshes;
+  std::string source_file;  // the file it came from, for messages ("" = built in code)
+  std::string base_dir;     // folder that relative paths resolve against ("" = current)
+};
+
+// Reads and validates a scene file. Throws asperity::Error `file: /pointer: what` (or
+// `file:line:column: what` for a JSON syntax error).
+SceneDesc loadScene(const std::string& path);
+// Validates parsed JSON; relative paths resolve against the folder of file_for_messages.
+SceneDesc parseScene(const nlohmann::json& json, const std::string& file_for_messages);
+
+// The JSON of a scene (every setting written out; surfaces keep their file or generator spec).
+nlohmann::json sceneToJson(const SceneDesc& scene);
+// Writes sceneToJson(scene) (indented, keys sorted). Relative file names are rewritten to
+// stay correct from the new file's folder. Throws asperity::Error naming the path on failure.
+void saveScene(const SceneDesc& scene, const std::string& path);
+
+// Builds a World: resolves normal maps (PNG files, generators; equal surfaces share one
+// NormalMap), masks and meshes, creates bodies, joints, springs and loads, and installs the
+// friction provider `scene.sampler`. Throws asperity::Error naming the file and culprit.
+std::unique_ptr<World> instantiate(const SceneDesc& scene);
+
+}  // namespace asperity

@@ -1,0 +1,59 @@
+// What the scene reader and writer share: the JSON names of enumerations, path resolution
+// against the scene's folder, and exact degree <-> radian conversion for round trips.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "asperity/scene/scene.hpp"
+#include "scene/json_reader.hpp"
+
+namespace asperity::scene {
+
+template <typename E>
+using Names = std::vector<std::pair<const char*, E>>;
+
+inline const Names<LimitSurfaceKind> kLimitSurfaceNames = {{"coulomb", LimitSurfaceKind::Coulomb},
+                                                           {"box", LimitSurfaceKind::Box},
+                                                           {"polygon", LimitSurfaceKind::Polygon}};
+inline const Names<FrameMode> kFrameModeNames = {{"world", FrameMode::World},
+                                                 {"body", FrameMode::Body},
+                                                 {"auto", FrameMode::Auto},
+                                                 {"texture", FrameMode::Texture}};
+inline const Names<BodyType> kBodyTypeNames = {{"dynamic", BodyType::Dynamic},
+                                               {"static", BodyType::Static},
+                                               {"kinematic", BodyType::Kinematic}};
+inline const Names<ShapeType> kShapeTypeNames = {
+    {"box", ShapeType::Box},          {"sphere", ShapeType::Sphere},
+    {"capsule", ShapeType::Capsule},  {"cylinder", ShapeType::Cylinder},
+    {"plane", ShapeType::Plane},      {"convex_hull", ShapeType::ConvexHull},
+    {"mesh", ShapeType::TriangleMesh}};
+inline const Names<JointType> kJointTypeNames = {{"distance", JointType::Distance},
+                                                 {"ball", JointType::Ball},
+                                                 {"hinge", JointType::Hinge},
+                                                 {"fixed", JointType::Fixed}};
+inline const Names<LoadDesc::Kind> kLoadKindNames = {
+    {"force", LoadDesc::Kind::Force},
+    {"torque", LoadDesc::Kind::Torque},
+    {"impulse", LoadDesc::Kind::Impulse},
+    {"angular_impulse", LoadDesc::Kind::AngularImpulse}};
+
+// Largest length, mass, speed... a scene may hold; keeps overflow out of the step.
+inline constexpr double kHuge = 1e6;
+
+// The folder of a file ("" for a bare name).
+std::string parentFolder(const std::string& file);
+// `file` if absolute, else base_dir/file (lexically normalised).
+std::string resolvePath(const std::string& base_dir, const std::string& file);
+
+// Degrees written so that reading them back gives the same radians bit for bit.
+double degreesFromRadians(double radians);
+double radiansFromDegrees(double degrees);
+
+// Parses the "bodies" array (shapes, surfaces, OBJ meshes), checking names are unique.
+void parseBodies(JsonReader& root, SceneDesc& scene);
+// Writes one body back (with its meshes from scene.meshes).
+nlohmann::json bodyToJson(const SceneDesc& scene, size_t index);
+
+}  // namespace asperity::scene

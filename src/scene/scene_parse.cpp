@@ -1,0 +1,164 @@
+// Scene files: the top level, "settings", and the joints, springs and loads that name bodies.
+// Bodies, shapes and surfaces are read in body_parse.cpp.
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <set>
+
+#include "asperity/error.hpp"
+#include "asperity/scene/scene.hpp"
+#include "scene/scene_common.hpp"
+
+namespace asperity {
+
+namespace scene {
+
+std::string parentFolder(const std::string& file) {
+  return std::filesystem::path(file).parent_path().string();
+}
+
+std::string resolvePath(const std::string& base_dir, const std::string& file) {
+  const std::filesystem::path p(file);
+  if (p.is_absolute() || base_dir.empty()) return p.lexically_normal().string();
+  return (std::filesystem::path(base_dir) / p).lexically_normal().string();
+}
+
+double radiansFromDegrees(double degrees) {
+  return degrees * (kPi / 180.0);
+}
+
+double degreesFromRadians(double radians) {
+  // The plain product, or a neighbour within a few ulps that converts back exactly.
+  const double d = radians * (180.0 / kPi);
+  double up = d;
+  double down = d;
+  for (int i = 0; i < 8; ++i) {
+    if (radiansFromDegrees(up) == radians) return up;
+    if (radiansFromDegrees(down) == radians) return down;
+    up = std::nextafter(up, std::numeric_limits<double>::infinity());
+    down = std::nextafter(down, -std::numeric_limits<double>::infinity());
+  }
+  return d;
+}
+
+namespace {
+
+// "settings": every WorldSettings field, plus the friction sampler's name.
+void parseSettings(JsonReader r, SceneDesc& scene) {
+  WorldSettings& s = scene.settings;
+  s.dt = r.number("dt", s.dt, Range::leftOpen(0.0, 1.0));
+  s.iterations = r.integer("iterations", s.iterations, 1, 10000);
+  s.gravity = r.vec3("gravity", s.gravity, Range::closed(-kHuge, kHuge));
+  s.limit_surface = r.enumeration("friction", s.limit_surface, kLimitSurfaceNames);
+  s.frame_mode = r.enumeration("frame", s.frame_mode, kFrameModeNames);
+  s.world_axis = r.direction("world_axis", s.world_axis);
+  s.fallback_axis = r.direction("fallback_axis", s.fallback_axis);
+  s.auto_frame_iterations = r.integer("auto_frame_iterations", s.auto_frame_iterations, 0, 1000);
+  s.auto_frame_speed = r.number("auto_frame_speed", s.auto_frame_speed, Range::nonNegative(kHuge));
+  s.warm_starting = r.boolean("warm_starting", s.warm_starting);
+  s.baumgarte = r.number("baumgarte", s.baumgarte, Range::closed(0.0, 1.0));
+  s.linear_slop = r.number("linear_slop", s.linear_slop, Range::nonNegative(kHuge));
+  s.contact_margin = r.number("contact_margin", s.contact_margin, Range::nonNegative(kHuge));
+  s.max_correction_speed =
+      r.number("max_correction_speed", s.max_correction_speed, Range::nonNegative(kHuge));
+  // SPEC 3: N, mu0, mu_max, w, R.
+  FrictionSettings& f = s.friction;
+  f.directions = r.integer("directions", f.directions, 4, 64);
+  f.mu0 = r.number("mu0", f.mu0, Range::closed(0.0, 100.0));
+  f.mu_max = static_cast<float>(
+      r.number("mu_max", static_cast<double>(f.mu_max), Range::leftOpen(0.0, 1000.0)));
+  f.patch_width = r.number("patch_width", f.patch_width, Range::positive(kHuge));
+  f.patch_resolution = r.integer("patch_resolution", f.patch_resolution, 1, 1024);
+  scene.sampler = r.string("sampler", scene.sampler);
+  if (scene.sampler.empty()) r.failAt("sampler", "must be a sampler name, got \"\"");
+  r.finish();
+}
+
+// A body name that must be one of the scene's bodies.
+std::string bodyName(JsonReader& r, const std::string& key, const std::set<std::string>& names) {
+  const std::string name = r.requiredString(key);
+  if (!names.count(name)) r.failAt(key, "unknown body \"" + name + "\"");
+  return name;
+}
+
+// "joints": distance, ball, hinge and fixed joints between two named bodies.
+SceneJoint parseJoint(JsonReader r, const std::set<std::string>& names) {
+  SceneJoint j;
+  JointDesc& d = j.desc;
+  d.name = r.string("name", d.name);
+  d.type = r.enumeration("type", d.type, kJointTypeNames);
+  j.body_a = bodyName(r, "body_a", names);
+  j.body_b = bodyName(r, "body_b", names);
+  if (j.body_a == j.body_b) r.failAt("body_b", "must differ from body_a (\"" + j.body_a + "\")");
+  d.anchor_a = r.vec3("anchor_a", d.anchor_a, Range::closed(-kHuge, kHuge));
+  d.anchor_b = r.vec3("anchor_b", d.anchor_b, Range::closed(-kHuge, kHuge));
+  d.axis_a = r.direction("axis_a", d.axis_a);
+  d.axis_b = r.direction("axis_b", d.axis_b);
+  // Distance joints: length(t) = rest_length + amplitude cos(2 pi frequency t + phase).
+  d.rest_length = r.number("rest_length", d.rest_length, Range::nonNegative(kHuge));
+  d.amplitude = r.number("amplitude", d.amplitude, Range::closed(-kHuge, kHuge));
+  d.frequency = r.number("frequency", d.frequency, Range::nonNegative(kHuge));
+  d.phase = r.number("phase", d.phase, Range::closed(-kHuge, kHuge));
+  d.collide_connected = r.boolean("collide_connected", d.collide_connected);
+  r.finish();
+  return j;
+}
+
+// "springs": a damped spring from a body point to a moving world target.
+SceneSpring parseSpring(JsonReader r, const std::set<std::string>& names) {
+  SceneSpring s;
+  SpringDesc& d = s.desc;
+  d.name = r.string("name", d.name);
+  s.body = bodyName(r, "body", names);
+  d.local_point = r.vec3("local_point", d.local_point, Range::closed(-kHuge, kHuge));
+  d.target = r.vec3("target", d.target, Range::closed(-kHuge, kHuge));
+  d.target_velocity = r.vec3("target_velocity", d.target_velocity, Range::closed(-kHuge, kHuge));
+  d.stiffness = r.number("stiffness", d.stiffness, Range::nonNegative(1e12));
+  d.damping = r.number("damping", d.damping, Range::nonNegative(1e12));
+  r.finish();
+  return s;
+}
+
+// "loads": forces and torques over [start, end), impulses once at start.
+SceneLoad parseLoad(JsonReader r, const std::set<std::string>& names) {
+  SceneLoad l;
+  LoadDesc& d = l.desc;
+  d.name = r.string("name", d.name);
+  l.body = bodyName(r, "body", names);
+  d.kind = r.enumeration("kind", d.kind, kLoadKindNames);
+  d.value = r.vec3("value", d.value, Range::closed(-1e12, 1e12));
+  d.local_point = r.vec3("point", d.local_point, Range::closed(-kHuge, kHuge));
+  d.start = r.number("start", d.start, Range::nonNegative(1e30));
+  d.end = r.number("end", d.end, Range::closed(d.start, 1e30));
+  r.finish();
+  return l;
+}
+
+}  // namespace
+
+}  // namespace scene
+
+SceneDesc parseScene(const nlohmann::json& json, const std::string& file_for_messages) {
+  using namespace scene;
+  SceneDesc out;
+  out.source_file = file_for_messages;
+  out.base_dir = parentFolder(file_for_messages);
+  JsonReader root(json, file_for_messages);
+  root.requireObject();
+  parseSettings(root.object("settings"), out);
+  parseBodies(root, out);
+  // Joints, springs and loads refer to bodies by name.
+  std::set<std::string> names;
+  for (const BodyDesc& b : out.bodies) names.insert(b.name);
+  for (JsonReader& r : root.objects("joints")) out.joints.push_back(parseJoint(r, names));
+  for (JsonReader& r : root.objects("springs")) out.springs.push_back(parseSpring(r, names));
+  for (JsonReader& r : root.objects("loads")) out.loads.push_back(parseLoad(r, names));
+  root.finish();
+  return out;
+}
+
+SceneDesc loadScene(const std::string& path) {
+  return parseScene(scene::parseJsonFile(path), path);
+}
+
+}  // namespace asperity
