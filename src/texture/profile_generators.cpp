@@ -1,0 +1,104 @@
+// Profile generators: the sawtooth of Figs. 8 and 12 and the screw thread of Fig. 13.
+//
+// Direction convention (SPEC 1): a facet whose normal tilts toward +a resists a body sliding
+// over it toward -a. The sawtooth's ramps rise toward +axis, so ramp normals tilt toward -axis
+// and steep-face normals toward +axis: sliding toward -axis is "against the steep faces".
+#include <cmath>
+
+#include "asperity/math/types.hpp"
+#include "texture/generator_support.hpp"
+#include "texture/profile.hpp"
+
+namespace asperity::texgen {
+
+namespace {
+
+double radians(double degrees) {
+  return degrees * kPi / 180.0;
+}
+
+// Fills a map from a profile along `axis`; `shear` adds that many profile texels per texel
+// across the axis (the helix of a thread).
+NormalMap profileMap(const PeriodicProfile& profile, int size, double axis, double shear,
+                     double window) {
+  const double ax = std::cos(axis);
+  const double ay = std::sin(axis);
+  // Across-axis direction b = (sin a, -cos a): +u when the axis is +v.
+  const double bx = ay;
+  const double by = -ax;
+  NormalMap map(size, size);
+  for (int j = 0; j < size; ++j) {
+    for (int i = 0; i < size; ++i) {
+      // Profile coordinate of the texel centre.
+      const double px = i + 0.5;
+      const double py = j + 0.5;
+      const double x = ax * px + ay * py + shear * (bx * px + by * py);
+      const double s = profile.slope(x, window);
+      // Gradient s (a + shear b).
+      const double gx = s * (ax + shear * bx);
+      const double gy = s * (ay + shear * by);
+      map.at(i, j) = Vec3f(static_cast<float>(-gx), static_cast<float>(-gy), 1.0f).normalized();
+    }
+  }
+  return map;
+}
+
+// sawtooth: a ramp of ramp_width * period at ramp_angle rising toward +axis, then a steep face
+// at steep_angle falling over the rest of the period.
+NormalMap makeSawtooth(const GeneratorContext& ctx) {
+  const double period = ctx.number("period");
+  const double ramp_width = ctx.number("ramp_width");
+  const double ramp = std::tan(radians(ctx.number("ramp_angle")));
+  const double steep = std::tan(radians(ctx.number("steep_angle")));
+  const PeriodicProfile profile(
+      {{ramp_width * period, ramp}, {(1.0 - ramp_width) * period, -steep}});
+  return profileMap(profile, ctx.size(), ctx.axisRadians("axis"), 0.0, ctx.number("smoothing"));
+}
+
+// thread: symmetric triangles; flanks at flank_angle from the radial direction (ISO metric:
+// 30 degrees), so facet normals tilt 90 - flank_angle degrees toward +axis and -axis equally.
+NormalMap makeThread(const GeneratorContext& ctx) {
+  const double pitch = ctx.number("pitch_texels");
+  const double slope = 1.0 / std::tan(radians(ctx.number("flank_angle")));
+  const PeriodicProfile profile({{0.5 * pitch, slope}, {0.5 * pitch, -slope}});
+  // A helix advances starts * pitch per turn, one turn being the map's width across the axis.
+  const double shear = ctx.number("starts") * pitch / ctx.size();
+  return profileMap(profile, ctx.size(), ctx.axisRadians("axis"), shear, 0.0);
+}
+
+}  // namespace
+
+std::vector<GeneratorEntry> profileGenerators() {
+  std::vector<GeneratorEntry> entries;
+  entries.push_back(
+      {{"sawtooth",
+        "sawtooth ridges: ramps rising toward +axis (normals tilt toward -axis) and steep faces "
+        "(normals tilt toward +axis); sliding toward -axis goes against the steep faces "
+        "(Figs. 8, 12)",
+        {numberParam("period", 32.0, 2.0, 8192.0, "ridge spacing (texels)"),
+         numberParam("ramp_angle", 20.0, 0.0, 89.0, "tilt of the gentle ramp facets (degrees)"),
+         numberParam("steep_angle", 70.0, 0.0, 89.0, "tilt of the steep facets (degrees)"),
+         numberParam("ramp_width", 0.5, 0.0, 1.0,
+                     "fraction of the period covered by the ramp; the steep face covers the rest "
+                     "(tan(steep) / (tan(ramp) + tan(steep)) makes a true height profile)"),
+         axisParam("0", "direction toward which the ramps rise"),
+         numberParam("smoothing", 0.0, 0.0, 1024.0,
+                     "width of a box filter over the slope profile (texels); 0 = sharp")}},
+       makeSawtooth});
+  entries.push_back(
+      {{"thread",
+        "screw thread: symmetric triangular profile along the axis, facets facing +axis and "
+        "-axis equally (Fig. 13)",
+        {numberParam("pitch_texels", 16.0, 2.0, 8192.0, "thread pitch (texels)"),
+         numberParam("flank_angle", 30.0, 1.0, 89.0,
+                     "angle between a flank and the radial direction (degrees; ISO metric: 30); "
+                     "facet normals tilt 90 - flank_angle from the surface normal"),
+         axisParam("90", "thread axis in the texture"),
+         numberParam("starts", 0.0, 0.0, 16.0,
+                     "helix starts: the profile advances starts * pitch per map width across "
+                     "the axis (0 = rings; whole numbers tile seamlessly)")}},
+       makeThread});
+  return entries;
+}
+
+}  // namespace asperity::texgen
