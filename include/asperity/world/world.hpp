@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -19,11 +20,11 @@
 #include "asperity/dynamics/joint.hpp"
 #include "asperity/friction/limit_surface.hpp"
 #include "asperity/sampler/friction_provider.hpp"
+#include "asperity/solver/contact_solver.hpp"
 
 namespace asperity {
 
 class CollisionDetector;
-class ContactSolver;
 
 // How each contact's tangent t is chosen (SPEC 5).
 enum class FrameMode {
@@ -128,7 +129,11 @@ class World {
   void computeFriction();
   void solve();
   void integrate();
-  double linearSlop() const;
+  void alignFramesWithSliding();
+  void checkBody(BodyId id, const std::string& what) const;
+  SolverSettings solverSettings() const;
+  std::span<const SolverJoint> solverJoints();
+  double automaticSlop() const;
 
   WorldSettings settings_;
   std::vector<Body> bodies_;
@@ -144,7 +149,8 @@ class World {
   FrameCallback frame_callback_;
   StepProfile profile_;
   bool bodies_changed_ = true;
-  double auto_slop_ = 0.0;
+  double slop_ = 0.0;  // resolved linear slop (m)
+  std::vector<SolverJoint> solver_joints_;
   double time_ = 0.0;
   int64_t steps_ = 0;
 };

@@ -1,0 +1,146 @@
+// The constraint solver: projected Gauss-Seidel (sequential impulses) on body velocities, for
+// contacts (normal row + 2D friction block projected on a limit surface, SPEC 4) and joints.
+//
+// Rows act on A with the contact conventions of collision/contact.hpp. Per iteration, in a
+// fixed order: joint rows, then each contact's normal row (lambda_n >= 0), its tangential
+// block (the unconstrained 2x2 update, then the accumulated (lambda_t, lambda_b) projected
+// on the limit surface for the CURRENT lambda_n), and its split-impulse position row.
+// Position errors of contacts are removed by split impulses: pseudo-velocities that move the
+// bodies but are forgotten after the step, so stabilisation adds no kinetic energy. Joints use
+// Baumgarte velocity bias. Cost per iteration is linear in the number of rows; nothing is
+// allocated in the iteration loop; the projection is picked once per solve, not per row.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "asperity/collision/contact.hpp"
+#include "asperity/dynamics/body.hpp"
+#include "asperity/dynamics/joint.hpp"
+#include "asperity/friction/limit_surface.hpp"
+#include "asperity/math/types.hpp"
+
+namespace asperity {
+
+struct SolverSettings {
+  double dt = 0.01;  // s
+  LimitSurfaceKind limit_surface = LimitSurfaceKind::Box;
+  double coulomb_mu = 0.2;            // mu0 of the isotropic Coulomb limit (SPEC 4)
+  double baumgarte = 0.2;             // fraction of a position error removed per step
+  double slop = 0.0;                  // m of penetration left uncorrected
+  double max_correction_speed = 2.0;  // m/s
+  bool warm_starting = true;
+};
+
+// A joint as the solver sees it: anchors and axes in the bodies' centre-of-mass frames.
+struct SolverJoint {
+  JointType type = JointType::Ball;
+  BodyId body_a = kNoBody;
+  BodyId body_b = kNoBody;
+  Vec3 anchor_a = Vec3::Zero();
+  Vec3 anchor_b = Vec3::Zero();
+  Vec3 axis_a = Vec3::UnitZ();
+  Vec3 axis_b = Vec3::UnitZ();
+  Quat rest_rotation = Quat::Identity();  // fixed: q_a^-1 q_b wanted
+  double length = 0.0;                    // distance: target length at the end of the step (m)
+  double length_rate = 0.0;               // distance: d length / dt (m/s)
+};
+
+class ContactSolver {
+ public:
+  // Copies body velocities (after external forces) and inverse masses; clears the rows.
+  void begin(std::span<const Body> bodies, const SolverSettings& settings);
+  // Joint rows (anchors in world from the bodies' poses).
+  void setJoints(std::span<const SolverJoint> joints);
+  // Contact rows. With friction, contacts carry their frame (t, b) and mu; without, only the
+  // normal rows are solved (frame mode Auto's first pass).
+  void setContacts(std::span<const Contact> contacts, bool friction);
+  // Warm start (first call after setContacts only) and `iterations` PGS sweeps.
+  void iterate(int iterations);
+  // Writes velocities and impulses back and remembers them for the next step's warm start.
+  void finish(std::span<Body> bodies, std::span<Contact> contacts);
+
+  // Current solver velocities of a body (world frame).
+  const Vec3& linearVelocity(BodyId id) const { return v_[id]; }
+  const Vec3& angularVelocity(BodyId id) const { return w_[id]; }
+  // Position-correction pseudo-velocities of the last solve (applied by integration only).
+  const Vec3& pseudoLinear(BodyId id) const { return vp_[id]; }
+  const Vec3& pseudoAngular(BodyId id) const { return wp_[id]; }
+  // Norm of the impulse changes of the last sweep (N s): falls as the solve converges.
+  double lastDelta() const { return last_delta_; }
+  int contactRowCount() const { return static_cast<int>(rows_.size()); }
+
+  // One contact: Jacobians, I^-1 J^T, effective masses and accumulated impulses.
+  struct ContactRow {
+    int a = 0, b = 0;
+    Vec3 n, t, bt;                            // normal and tangents (world)
+    Vec3 ra_n, rb_n, ra_t, rb_t, ra_b, rb_b;  // r x direction
+    Vec3 ia_n, ib_n, ia_t, ib_t, ia_b, ib_b;  // I^-1 (r x direction)
+    double mass_n = 0.0;                      // 1 / K_nn
+    Eigen::Matrix2d inv_k_tb;                 // inverse of the tangential 2x2 block
+    double target_n = 0.0;  // normal velocity target (negative for separated contacts)
+    double target_p = 0.0;  // pseudo-velocity target of the split impulse
+    double lambda_n = 0.0, lambda_t = 0.0, lambda_b = 0.0, lambda_p = 0.0;
+  };
+  // A point-to-point (ball) block of three rows.
+  struct BallRow {
+    int a = 0, b = 0, joint = 0;
+    Vec3 ra, rb;  // anchors relative to the centres of mass (world)
+    Mat3 inv_k;   // inverse effective mass
+    Vec3 bias;    // Baumgarte velocity bias
+    Vec3 lambda = Vec3::Zero();
+  };
+  // One scalar row: J v = lin.(v_a - v_b) + ang_a.w_a - ang_b.w_b, unbounded.
+  struct AxisRow {
+    int a = 0, b = 0, joint = 0, slot = 0;
+    // Jacobian and I^-1 of its angular parts.
+    Vec3 lin = Vec3::Zero(), ang_a = Vec3::Zero(), ang_b = Vec3::Zero();
+    Vec3 ia = Vec3::Zero(), ib = Vec3::Zero();
+    double mass = 0.0, target = 0.0, lambda = 0.0;
+  };
+
+ private:
+  struct Cached {
+    uint64_t key;
+    double lambda_n;
+    Vec3 tangential;  // lambda_t t + lambda_b b, world frame
+  };
+
+  void prepareContact(const Contact& c, ContactRow& row) const;
+  void warmStartRow(uint64_t key, ContactRow& row, size_t index) const;
+  void warmStart();
+  void warmStartJoints();
+  void addAngularRow(int a, int b, int joint, int slot, const Vec3& u, double target);
+  void addAxisRow(AxisRow row);
+  void storeJointImpulses();
+  template <class Limit>
+  double sweepContacts(std::span<const Limit> limits);
+  double sweepPositions();
+  double sweepJoints();
+  void applyImpulse(int a, int b, const Vec3& p, const Vec3& ia, const Vec3& ib);
+
+  SolverSettings settings_;
+  // Per body (indexed by BodyId): velocities, pseudo-velocities, inverse masses.
+  std::vector<Vec3> v_, w_, vp_, wp_;
+  std::vector<double> inv_mass_;
+  std::vector<Mat3> inv_inertia_;
+  std::vector<Vec3> position_;
+  std::vector<Quat> rotation_;
+  // Rows.
+  std::vector<ContactRow> rows_;
+  std::vector<int> penetrating_;  // rows with a split-impulse target
+  std::vector<CoulombLimit> coulomb_;
+  std::vector<BoxLimit> box_;
+  std::vector<PolygonLimit> polygon_;
+  bool friction_ = true;
+  bool warm_started_ = false;
+  std::vector<BallRow> balls_;
+  std::vector<AxisRow> axes_;
+  std::vector<double> joint_lambda_;  // 6 slots per joint, kept for the next warm start
+  // Warm-start cache of the previous step, sorted by key.
+  std::vector<Cached> cache_;
+  double last_delta_ = 0.0;
+};
+
+}  // namespace asperity

@@ -1,0 +1,272 @@
+// Projected Gauss-Seidel on body velocities: contact rows (SPEC 4) and the sweep machinery.
+// Joint rows live in joint_rows.cpp.
+#include "asperity/solver/contact_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <type_traits>
+
+namespace asperity {
+
+namespace {
+
+// Tag for the frictionless pass (frame mode Auto): normal rows only.
+struct NoFriction {};
+
+}  // namespace
+
+void ContactSolver::begin(std::span<const Body> bodies, const SolverSettings& settings) {
+  settings_ = settings;
+  const size_t n = bodies.size();
+  v_.resize(n);
+  w_.resize(n);
+  vp_.assign(n, Vec3::Zero());
+  wp_.assign(n, Vec3::Zero());
+  inv_mass_.resize(n);
+  inv_inertia_.resize(n);
+  position_.resize(n);
+  rotation_.resize(n);
+  // Static and kinematic bodies keep their velocity and never take an impulse.
+  for (size_t i = 0; i < n; ++i) {
+    const Body& body = bodies[i];
+    v_[i] = body.linear_velocity;
+    w_[i] = body.angular_velocity;
+    const bool dynamic = body.isDynamic();
+    inv_mass_[i] = dynamic ? body.inverse_mass : 0.0;
+    inv_inertia_[i] = dynamic ? body.inverseInertiaWorld() : Mat3::Zero();
+    position_[i] = body.pose.position;
+    rotation_[i] = body.pose.rotation;
+  }
+  rows_.clear();
+  penetrating_.clear();
+  coulomb_.clear();
+  box_.clear();
+  polygon_.clear();
+  balls_.clear();
+  axes_.clear();
+  warm_started_ = false;
+  last_delta_ = 0.0;
+}
+
+void ContactSolver::prepareContact(const Contact& c, ContactRow& row) const {
+  row.a = static_cast<int>(c.body_a);
+  row.b = static_cast<int>(c.body_b);
+  const size_t a = c.body_a, b = c.body_b;
+  const Vec3 ra = c.point - position_[a];
+  const Vec3 rb = c.point - position_[b];
+  row.n = c.normal;
+  row.t = c.t;
+  row.bt = c.b;
+  // Angular Jacobians r x d and their images I^-1 (r x d).
+  row.ra_n = ra.cross(row.n);
+  row.rb_n = rb.cross(row.n);
+  row.ra_t = ra.cross(row.t);
+  row.rb_t = rb.cross(row.t);
+  row.ra_b = ra.cross(row.bt);
+  row.rb_b = rb.cross(row.bt);
+  row.ia_n = inv_inertia_[a] * row.ra_n;
+  row.ib_n = inv_inertia_[b] * row.rb_n;
+  row.ia_t = inv_inertia_[a] * row.ra_t;
+  row.ib_t = inv_inertia_[b] * row.rb_t;
+  row.ia_b = inv_inertia_[a] * row.ra_b;
+  row.ib_b = inv_inertia_[b] * row.rb_b;
+  // Effective masses: K = J M^-1 J^T for the normal row and the tangential 2x2 block.
+  const double im = inv_mass_[a] + inv_mass_[b];
+  const double k_nn = im + row.ra_n.dot(row.ia_n) + row.rb_n.dot(row.ib_n);
+  row.mass_n = k_nn > 0.0 ? 1.0 / k_nn : 0.0;
+  Eigen::Matrix2d k;
+  k(0, 0) = im + row.ra_t.dot(row.ia_t) + row.rb_t.dot(row.ib_t);
+  k(1, 1) = im + row.ra_b.dot(row.ia_b) + row.rb_b.dot(row.ib_b);
+  k(0, 1) = k(1, 0) = row.ra_t.dot(row.ia_b) + row.rb_t.dot(row.ib_b);
+  const double det = k.determinant();
+  row.inv_k_tb = det > 1e-300 ? Eigen::Matrix2d(k.inverse()) : Eigen::Matrix2d::Zero();
+  // Separated (speculative) contacts may close their gap within the step; restitution 0.
+  row.target_n = c.phi < 0.0 ? c.phi / settings_.dt : 0.0;
+  // Split impulse: push the penetration beyond the slop out at a bounded pseudo-velocity.
+  const double excess = c.phi - settings_.slop;
+  row.target_p = excess > 0.0 ? std::min(settings_.baumgarte * excess / settings_.dt,
+                                         settings_.max_correction_speed)
+                              : 0.0;
+  row.lambda_n = row.lambda_t = row.lambda_b = row.lambda_p = 0.0;
+}
+
+void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction) {
+  friction_ = friction;
+  rows_.resize(contacts.size());
+  penetrating_.clear();
+  coulomb_.clear();
+  box_.clear();
+  polygon_.clear();
+  for (size_t i = 0; i < contacts.size(); ++i) {
+    const Contact& c = contacts[i];
+    ContactRow& row = rows_[i];
+    prepareContact(c, row);
+    if (row.target_p > 0.0) penetrating_.push_back(static_cast<int>(i));
+    // The limit surface chosen in the settings (SPEC 4).
+    if (friction) {
+      switch (settings_.limit_surface) {
+        case LimitSurfaceKind::Coulomb:
+          coulomb_.push_back(CoulombLimit{settings_.coulomb_mu});
+          break;
+        case LimitSurfaceKind::Box:
+          box_.push_back(BoxLimit::fromDirectional(c.mu));
+          break;
+        case LimitSurfaceKind::Polygon:
+          polygon_.push_back(PolygonLimit{c.mu});
+          break;
+      }
+    }
+    if (settings_.warm_starting) warmStartRow(c.key, row, i);
+  }
+}
+
+void ContactSolver::warmStartRow(uint64_t key, ContactRow& row, size_t index) const {
+  // Same contact last step (unique key): reuse its impulses, the tangential one re-expressed
+  // in this step's frame and projected on this step's limit surface.
+  const auto range =
+      std::equal_range(cache_.begin(), cache_.end(), Cached{key, 0.0, Vec3()},
+                       [](const Cached& x, const Cached& y) { return x.key < y.key; });
+  if (range.second - range.first != 1) return;
+  row.lambda_n = range.first->lambda_n;
+  if (!friction_) return;
+  const Vec2 tb(range.first->tangential.dot(row.t), range.first->tangential.dot(row.bt));
+  Vec2 projected = tb;
+  switch (settings_.limit_surface) {
+    case LimitSurfaceKind::Coulomb:
+      projected = coulomb_[index].project(tb, row.lambda_n);
+      break;
+    case LimitSurfaceKind::Box:
+      projected = box_[index].project(tb, row.lambda_n);
+      break;
+    case LimitSurfaceKind::Polygon:
+      projected = polygon_[index].project(tb, row.lambda_n);
+      break;
+  }
+  row.lambda_t = projected.x();
+  row.lambda_b = projected.y();
+}
+
+void ContactSolver::applyImpulse(int a, int b, const Vec3& p, const Vec3& ia, const Vec3& ib) {
+  // Impulse p on A at its contact (I^-1 (r x p) given as ia), the opposite on B.
+  v_[static_cast<size_t>(a)] += inv_mass_[static_cast<size_t>(a)] * p;
+  w_[static_cast<size_t>(a)] += ia;
+  v_[static_cast<size_t>(b)] -= inv_mass_[static_cast<size_t>(b)] * p;
+  w_[static_cast<size_t>(b)] -= ib;
+}
+
+void ContactSolver::warmStart() {
+  warmStartJoints();
+  for (const ContactRow& r : rows_) {
+    const Vec3 p = r.lambda_n * r.n + r.lambda_t * r.t + r.lambda_b * r.bt;
+    const Vec3 ia = r.lambda_n * r.ia_n + r.lambda_t * r.ia_t + r.lambda_b * r.ia_b;
+    const Vec3 ib = r.lambda_n * r.ib_n + r.lambda_t * r.ib_t + r.lambda_b * r.ib_b;
+    applyImpulse(r.a, r.b, p, ia, ib);
+  }
+}
+
+template <class Limit>
+double ContactSolver::sweepContacts(std::span<const Limit> limits) {
+  double delta2 = 0.0;
+  for (size_t i = 0; i < rows_.size(); ++i) {
+    ContactRow& r = rows_[i];
+    const size_t a = static_cast<size_t>(r.a), b = static_cast<size_t>(r.b);
+    Vec3& va = v_[a];
+    Vec3& wa = w_[a];
+    Vec3& vb = v_[b];
+    Vec3& wb = w_[b];
+    const double ima = inv_mass_[a], imb = inv_mass_[b];
+    // Normal row: lambda_n >= 0 (SPEC 1: impulse lambda_n n on A).
+    const double vn = r.n.dot(va - vb) + wa.dot(r.ra_n) - wb.dot(r.rb_n);
+    const double ln = std::max(0.0, r.lambda_n + (r.target_n - vn) * r.mass_n);
+    const double dn = ln - r.lambda_n;
+    r.lambda_n = ln;
+    va += (ima * dn) * r.n;
+    wa += dn * r.ia_n;
+    vb -= (imb * dn) * r.n;
+    wb -= dn * r.ib_n;
+    delta2 += dn * dn;
+    if constexpr (!std::is_same_v<Limit, NoFriction>) {
+      // Tangential block: unconstrained 2x2 update, then project the accumulated impulse on
+      // the limit surface for the current lambda_n (SPEC 4).
+      const Vec3 dv = va - vb;
+      const Vec2 vel(r.t.dot(dv) + wa.dot(r.ra_t) - wb.dot(r.rb_t),
+                     r.bt.dot(dv) + wa.dot(r.ra_b) - wb.dot(r.rb_b));
+      const Vec2 old(r.lambda_t, r.lambda_b);
+      const Vec2 next = limits[i].project(old - r.inv_k_tb * vel, ln);
+      const Vec2 d = next - old;
+      r.lambda_t = next.x();
+      r.lambda_b = next.y();
+      const Vec3 p = d.x() * r.t + d.y() * r.bt;
+      va += ima * p;
+      wa += d.x() * r.ia_t + d.y() * r.ia_b;
+      vb -= imb * p;
+      wb -= d.x() * r.ib_t + d.y() * r.ib_b;
+      delta2 += d.squaredNorm();
+    }
+  }
+  return delta2;
+}
+
+double ContactSolver::sweepPositions() {
+  // Split impulse: the same normal rows on the pseudo-velocities, toward target_p.
+  double delta2 = 0.0;
+  for (const int i : penetrating_) {
+    ContactRow& r = rows_[static_cast<size_t>(i)];
+    const size_t a = static_cast<size_t>(r.a), b = static_cast<size_t>(r.b);
+    const double vn = r.n.dot(vp_[a] - vp_[b]) + wp_[a].dot(r.ra_n) - wp_[b].dot(r.rb_n);
+    const double lp = std::max(0.0, r.lambda_p + (r.target_p - vn) * r.mass_n);
+    const double dp = lp - r.lambda_p;
+    r.lambda_p = lp;
+    vp_[a] += (inv_mass_[a] * dp) * r.n;
+    wp_[a] += dp * r.ia_n;
+    vp_[b] -= (inv_mass_[b] * dp) * r.n;
+    wp_[b] -= dp * r.ib_n;
+    delta2 += dp * dp;
+  }
+  return delta2;
+}
+
+void ContactSolver::iterate(int iterations) {
+  if (!warm_started_) {
+    if (settings_.warm_starting) warmStart();
+    warm_started_ = true;
+  }
+  for (int it = 0; it < iterations; ++it) {
+    // Fixed order: joints, contacts (with the projection chosen once), position rows.
+    double delta2 = sweepJoints();
+    if (!friction_) {
+      delta2 += sweepContacts(std::span<const NoFriction>());
+    } else if (settings_.limit_surface == LimitSurfaceKind::Coulomb) {
+      delta2 += sweepContacts(std::span<const CoulombLimit>(coulomb_));
+    } else if (settings_.limit_surface == LimitSurfaceKind::Box) {
+      delta2 += sweepContacts(std::span<const BoxLimit>(box_));
+    } else {
+      delta2 += sweepContacts(std::span<const PolygonLimit>(polygon_));
+    }
+    sweepPositions();
+    last_delta_ = std::sqrt(delta2);
+  }
+}
+
+void ContactSolver::finish(std::span<Body> bodies, std::span<Contact> contacts) {
+  // Velocities of dynamic bodies; the impulses on each contact.
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    if (!bodies[i].isDynamic()) continue;
+    bodies[i].linear_velocity = v_[i];
+    bodies[i].angular_velocity = w_[i];
+  }
+  cache_.clear();
+  for (size_t i = 0; i < rows_.size() && i < contacts.size(); ++i) {
+    const ContactRow& r = rows_[i];
+    contacts[i].lambda_n = r.lambda_n;
+    contacts[i].lambda_t = r.lambda_t;
+    contacts[i].lambda_b = r.lambda_b;
+    cache_.push_back({contacts[i].key, r.lambda_n, r.lambda_t * r.t + r.lambda_b * r.bt});
+  }
+  // Sorted by key for the next step's lookups (stable: ties keep contact order).
+  std::stable_sort(cache_.begin(), cache_.end(),
+                   [](const Cached& x, const Cached& y) { return x.key < y.key; });
+  storeJointImpulses();
+}
+
+}  // namespace asperity

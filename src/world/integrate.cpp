@@ -1,0 +1,37 @@
+// The last stage of a step: positions from velocities (semi-implicit Euler), orientations by
+// the exact rotation of the angular velocity over dt, renormalised.
+#include <cmath>
+
+#include "asperity/world/world.hpp"
+
+namespace asperity {
+
+namespace {
+
+// q' = exp(w dt / 2) q, normalised.
+Quat rotate(const Quat& q, const Vec3& w, double dt) {
+  const double angle = w.norm() * dt;
+  if (!(angle > 1e-15)) return q;
+  return (Quat(Eigen::AngleAxisd(angle, w.normalized())) * q).normalized();
+}
+
+}  // namespace
+
+void World::integrate() {
+  const double dt = settings_.dt;
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    Body& b = bodies_[i];
+    if (b.type == BodyType::Static) continue;
+    // Dynamic bodies also move by the split-impulse pseudo-velocities (then forgotten).
+    Vec3 v = b.linear_velocity;
+    Vec3 w = b.angular_velocity;
+    if (b.isDynamic()) {
+      v += solver_->pseudoLinear(static_cast<BodyId>(i));
+      w += solver_->pseudoAngular(static_cast<BodyId>(i));
+    }
+    b.pose.position += dt * v;
+    b.pose.rotation = rotate(b.pose.rotation, w, dt);
+  }
+}
+
+}  // namespace asperity

@@ -1,0 +1,189 @@
+// The world: bodies, joints and drivers, and the step that runs the stages in order
+// (docs/step.md). Stage bodies live beside this file: drivers.cpp, contact_frames.cpp,
+// integrate.cpp.
+#include "asperity/world/world.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <string>
+
+#include "asperity/collision/collision_detector.hpp"
+#include "asperity/error.hpp"
+#include "asperity/sampler/constant_provider.hpp"
+#include "asperity/solver/contact_solver.hpp"
+
+namespace asperity {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Milliseconds since `start`, and restart the clock.
+double lap(Clock::time_point& start) {
+  const Clock::time_point now = Clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - start).count();
+  start = now;
+  return ms;
+}
+
+}  // namespace
+
+World::World(WorldSettings settings)
+    : settings_(std::move(settings)),
+      collision_(std::make_unique<CollisionDetector>()),
+      solver_(std::make_unique<ContactSolver>()),
+      provider_(std::make_unique<ConstantProvider>()) {}
+
+World::~World() = default;
+
+void World::step() {
+  if (!(settings_.dt > 0.0)) throw Error("world settings: dt must be > 0");
+  if (settings_.iterations < 1) throw Error("world settings: iterations must be >= 1");
+  StepProfile p;
+  const Clock::time_point begin = Clock::now();
+  Clock::time_point clock = begin;
+  // 1. Gravity, springs and loads change the velocities (first half of semi-implicit Euler).
+  applyDrivers();
+  p.drivers_ms = lap(clock);
+  // 2. Contacts from the current poses (normal B -> A, phi, witness points, keys).
+  collide();
+  p.collide_ms = lap(clock);
+  // 3. Each contact's tangent frame (t, b) by the frame mode (SPEC 5).
+  computeFrames();
+  p.frames_ms = lap(clock);
+  // 4. Per-direction friction coefficients of every contact (SPEC 3, Eq. 7).
+  computeFriction();
+  p.friction_ms = lap(clock);
+  p.patch_ms = provider_->lastPatchTimeMs();
+  p.averaging_ms = provider_->lastAveragingTimeMs();
+  // 5. PGS on velocities: joints, contacts with limit-surface friction, split impulses.
+  solve();
+  p.solve_ms = lap(clock);
+  // 6. Positions and orientations from the new velocities (plus position corrections).
+  integrate();
+  p.integrate_ms = lap(clock);
+  // 7. The clock.
+  time_ += settings_.dt;
+  ++steps_;
+  p.total_ms = std::chrono::duration<double, std::milli>(Clock::now() - begin).count();
+  p.contacts = static_cast<int>(contacts_.size());
+  p.fallbacks = static_cast<int>(std::count_if(contacts_.begin(), contacts_.end(),
+                                               [](const Contact& c) { return c.fallback; }));
+  profile_ = p;
+}
+
+BodyId World::createBody(const BodyDesc& desc) {
+  bodies_.push_back(makeBody(desc));
+  descs_.push_back(desc);
+  bodies_changed_ = true;
+  return static_cast<BodyId>(bodies_.size() - 1);
+}
+
+void World::checkBody(BodyId id, const std::string& what) const {
+  if (id >= bodies_.size()) {
+    throw Error(what + ": body id " + std::to_string(id) + " does not exist");
+  }
+}
+
+int World::createJoint(const JointDesc& desc) {
+  const std::string what = "joint '" + desc.name + "'";
+  checkBody(desc.body_a, what);
+  checkBody(desc.body_b, what);
+  if (desc.body_a == desc.body_b) throw Error(what + ": joins a body to itself");
+  JointDesc joint = desc;
+  const Body& a = bodies_[desc.body_a];
+  const Body& b = bodies_[desc.body_b];
+  // A negative rest length means "as placed": the anchors' current distance.
+  const Vec3 pa = a.descriptionPose().apply(desc.anchor_a);
+  const Vec3 pb = b.descriptionPose().apply(desc.anchor_b);
+  if (joint.type == JointType::Distance && joint.rest_length < 0.0) {
+    joint.rest_length = (pa - pb).norm();
+  }
+  if (joint.type == JointType::Hinge &&
+      (desc.axis_a.norm() < 1e-12 || desc.axis_b.norm() < 1e-12)) {
+    throw Error(what + ": hinge axis has zero length");
+  }
+  joints_.push_back(joint);
+  joint_rest_rotation_.push_back(a.pose.rotation.conjugate() * b.pose.rotation);
+  if (!desc.collide_connected) {
+    collision_->ignorePair(desc.body_a, desc.body_b);
+    bodies_changed_ = true;
+  }
+  return static_cast<int>(joints_.size() - 1);
+}
+
+int World::addSpring(const SpringDesc& desc) {
+  checkBody(desc.body, "spring '" + desc.name + "'");
+  if (desc.stiffness < 0.0 || desc.damping < 0.0) {
+    throw Error("spring '" + desc.name + "': stiffness and damping must be >= 0");
+  }
+  springs_.push_back(desc);
+  return static_cast<int>(springs_.size() - 1);
+}
+
+void World::addLoad(const LoadDesc& desc) {
+  checkBody(desc.body, "load '" + desc.name + "'");
+  if (!desc.value.allFinite()) throw Error("load '" + desc.name + "': value is not finite");
+  loads_.push_back(desc);
+}
+
+void World::setFrictionProvider(std::unique_ptr<FrictionProvider> provider) {
+  if (!provider) throw Error("World::setFrictionProvider: provider is null");
+  provider_ = std::move(provider);
+}
+
+Body& World::body(BodyId id) {
+  checkBody(id, "World::body");
+  return bodies_[id];
+}
+
+const Body& World::body(BodyId id) const {
+  checkBody(id, "World::body");
+  return bodies_[id];
+}
+
+const BodyDesc& World::bodyDesc(BodyId id) const {
+  checkBody(id, "World::bodyDesc");
+  return descs_[id];
+}
+
+BodyId World::findBody(std::string_view name) const {
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    if (bodies_[i].name == name) return static_cast<BodyId>(i);
+  }
+  return kNoBody;
+}
+
+double World::jointError(int index) const {
+  const JointDesc& j = joints_.at(static_cast<size_t>(index));
+  const Vec3 pa = bodies_[j.body_a].descriptionPose().apply(j.anchor_a);
+  const Vec3 pb = bodies_[j.body_b].descriptionPose().apply(j.anchor_b);
+  // Distance joints: deviation from the current target length; others: anchor separation.
+  if (j.type == JointType::Distance) {
+    return std::abs((pa - pb).norm() - distanceJointLength(j, time_));
+  }
+  return (pa - pb).norm();
+}
+
+uint64_t World::stateHash() const {
+  // FNV-1a over the bit patterns of the doubles (bit-exact, platform byte order).
+  uint64_t hash = 1469598103934665603ull;
+  auto mix = [&hash](double value) {
+    unsigned char bytes[sizeof(double)];
+    std::memcpy(bytes, &value, sizeof(double));
+    for (const unsigned char byte : bytes) {
+      hash ^= byte;
+      hash *= 1099511628211ull;
+    }
+  };
+  for (const Body& b : bodies_) {
+    for (int k = 0; k < 3; ++k) mix(b.pose.position[k]);
+    for (int k = 0; k < 4; ++k) mix(b.pose.rotation.coeffs()[k]);
+    for (int k = 0; k < 3; ++k) mix(b.linear_velocity[k]);
+    for (int k = 0; k < 3; ++k) mix(b.angular_velocity[k]);
+  }
+  return hash;
+}
+
+}  // namespace asperity
