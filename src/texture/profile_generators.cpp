@@ -21,8 +21,10 @@ double radians(double degrees) {
 // across the axis (the helix of a thread).
 NormalMap profileMap(const PeriodicProfile& profile, int size, double axis, double shear,
                      double window) {
-  const double ax = std::cos(axis);
-  const double ay = std::sin(axis);
+  // Exact components for multiples of 90 degrees (cos(pi / 2) is not 0 in floating point).
+  const auto snap = [](double c) { return std::abs(c) < 1e-12 ? 0.0 : c; };
+  const double ax = snap(std::cos(axis));
+  const double ay = snap(std::sin(axis));
   // Across-axis direction b = (sin a, -cos a): +u when the axis is +v.
   const double bx = ay;
   const double by = -ax;
