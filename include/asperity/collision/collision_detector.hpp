@@ -1,0 +1,72 @@
+// The collision stage: broadphase and narrowphase over all bodies' shapes, giving contacts
+// that follow the conventions of contact.hpp (normal from B to A, phi >= 0, witness points,
+// shape/feature identities, a persistent key per contact for warm starting).
+//
+// Which body is A (SPEC 1): when exactly one body of the pair is dynamic, it is A (so the
+// ground, a static or kinematic body, is always B); when both are dynamic, A is the one with
+// the lower id. Body ids are indices into the span given to setBodies/detect.
+//
+// Identities: shape_a/shape_b index the body's shapes; feature_a/feature_b hold the triangle
+// index for static triangle meshes and signed-distance contacts, the face index for boxes
+// (2 * axis + (outward normal along the negative axis ? 1 : 0), axes x, y, z of the box) and
+// -1 otherwise. `key` stays the same for as long as the contact persists (Bullet's persistent
+// manifolds keep the points alive across calls; signed-distance contacts are keyed by vertex).
+//
+// Concave meshes: a static TriangleMesh is a BVH of its triangles; a dynamic TriangleMesh
+// collides as the convex hull of its vertices, except against another TriangleMesh shape when
+// every shape of both bodies is a TriangleMesh and both meshes are closed: then the signed
+// distance path is used (a grid SDF of each closed mesh, queried with the other mesh's
+// vertices), which sees concave features such as a nut's bore (see signed_distance_field.hpp).
+#pragma once
+
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "asperity/collision/contact.hpp"
+#include "asperity/dynamics/body.hpp"
+
+namespace asperity {
+
+// How concave mesh pairs are handled.
+enum class MeshPairMode {
+  Auto,       // signed distance fields for mesh-vs-mesh bodies where a mesh is closed
+  ConvexHull  // always Bullet: dynamic meshes as convex hulls
+};
+
+struct CollisionSettings {
+  // Contacts are reported up to this separation (m); scaled to the scene by the world
+  // (e.g. a fraction of the smallest shape) so millimetre parts and metre boxes both work.
+  double contact_margin = 0.0;  // 0 = automatic from the bodies' sizes
+  // Report contacts that are within the margin but not yet touching, with phi < 0 (the gap).
+  // Off by default: every reported contact has phi >= 0 (contact.hpp).
+  bool report_gaps = false;
+
+  MeshPairMode mesh_pairs = MeshPairMode::Auto;
+  int sdf_resolution = 64;       // grid cells along the longest side of a mesh's box
+  int sdf_max_contacts = 32;     // per shape pair and direction, deepest first
+  double sdf_min_spacing = 2.0;  // kept contacts lie at least this many grid cells apart
+};
+
+class CollisionDetector {
+ public:
+  CollisionDetector();
+  ~CollisionDetector();
+  CollisionDetector(const CollisionDetector&) = delete;
+  CollisionDetector& operator=(const CollisionDetector&) = delete;
+
+  // Rebuilds the collision objects for these bodies (call after adding/removing bodies).
+  void setBodies(std::span<const Body> bodies, const CollisionSettings& settings);
+  // Updates poses and returns this step's contacts (valid until the next call). Pairs of
+  // non-dynamic bodies and pairs filtered by `ignore` are skipped. Contacts are sorted by
+  // (body_a, body_b, key).
+  const std::vector<Contact>& detect(std::span<const Body> bodies);
+  // Bodies joined by a joint may be excluded from colliding with each other.
+  void ignorePair(BodyId a, BodyId b);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace asperity

@@ -1,0 +1,41 @@
+// Conversion of asperity shapes to Bullet collision shapes (single precision), with collision
+// margins and contact thresholds scaled to each shape's size so that millimetre parts and
+// metre boxes both work.
+#pragma once
+
+#include <btBulletCollisionCommon.h>
+
+#include <memory>
+#include <vector>
+
+#include "asperity/dynamics/body.hpp"
+#include "asperity/geometry/shape.hpp"
+
+namespace asperity::collision_detail {
+
+inline btVector3 toBt(const Vec3& v) {
+  return {static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()), static_cast<btScalar>(v.z())};
+}
+inline Vec3 fromBt(const btVector3& v) {
+  return {static_cast<double>(v.x()), static_cast<double>(v.y()), static_cast<double>(v.z())};
+}
+btTransform toBt(const Transform& t);
+
+// The smallest extent of a shape (m): the size its margin and thresholds follow.
+double shapeSize(const Shape& shape);
+// Bullet's collision margin for a shape of this size: min(0.04, 0.02 * size) (m).
+double marginFor(double size);
+
+// A Bullet shape and the storage it points into (triangle arrays for meshes).
+struct BulletShape {
+  std::unique_ptr<btCollisionShape> shape;
+  std::unique_ptr<btTriangleIndexVertexArray> mesh_interface;
+  std::vector<float> vertices;  // x, y, z per vertex, referenced by mesh_interface
+  std::vector<int> indices;     // three per triangle
+};
+
+// Builds the Bullet shape of `shape` for a body of this type. Throws Error for shapes that
+// cannot be built (a plane on a dynamic body, a mesh without triangles, a degenerate hull).
+BulletShape makeBulletShape(const Shape& shape, BodyType body_type);
+
+}  // namespace asperity::collision_detail

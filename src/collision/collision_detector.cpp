@@ -1,0 +1,376 @@
+// The collision stage.
+//
+// Bullet's role: Bullet's collision module (single precision, no dynamics world) finds the
+// pairs (btDbvtBroadphase) and runs the narrowphase (btCollisionDispatcher over a
+// btCollisionWorld): box-box clipping, convex-plane with perturbed support points (so that a
+// box resting on a plane gets its four corners in one call), GJK/EPA and polyhedral clipping
+// for convex pairs, BVH traversal for static triangle meshes. Its persistent manifolds keep
+// contact points alive across calls; each point gets an id stored in the manifold point, from
+// which the contact key is hashed. Everything after that is done here in double precision:
+// witness points from the manifold's local points through the double body poses, snapped
+// onto the exact primitive surfaces (contact_geometry), phi from the witness points.
+// Concave mesh pairs where both meshes are closed go through signed distance fields instead
+// (sdf_contacts): the near callback records those pairs and Bullet does not touch them.
+//
+// One Bullet collision object per shape (not a btCompoundShape per body): Bullet stores a
+// compound's child index and a mesh's triangle index in the same manifold field, so separate
+// objects are what keeps both Contact::shape_* and Contact::feature_*.
+//
+// A/B rule: when exactly one body is dynamic it is A (the ground is B); when both are
+// dynamic, the lower id is A. The normal points from B toward A, phi >= 0 is the depth.
+#include "asperity/collision/collision_detector.hpp"
+
+#include <BulletCollision/CollisionDispatch/btConvexPlaneCollisionAlgorithm.h>
+#include <btBulletCollisionCommon.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include "asperity/collision/signed_distance_field.hpp"
+#include "asperity/error.hpp"
+#include "collision/bullet_shapes.hpp"
+#include "collision/contact_geometry.hpp"
+#include "collision/sdf_contacts.hpp"
+
+namespace asperity {
+
+using namespace collision_detail;
+
+namespace {
+
+// splitmix64 finaliser over a running combination: keys that differ in any field differ.
+uint64_t mix(uint64_t h, uint64_t v) {
+  h ^= v + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
+  h ^= h >> 30, h *= 0xbf58476d1ce4e5b9ull;
+  h ^= h >> 27, h *= 0x94d049bb133111ebull;
+  return h ^ (h >> 31);
+}
+
+uint64_t contactKey(const Contact& c, uint64_t point_id) {
+  uint64_t h = mix(0, c.body_a);
+  h = mix(h, c.body_b);
+  h = mix(h, static_cast<uint64_t>(static_cast<uint32_t>(c.shape_a)));
+  h = mix(h, static_cast<uint64_t>(static_cast<uint32_t>(c.shape_b)));
+  return mix(h, point_id);
+}
+
+// One shape of one body, as one Bullet collision object.
+struct ShapeRecord {
+  BodyId body = kNoBody;
+  int index = -1;  // into the body's shapes
+  BodyType body_type = BodyType::Dynamic;
+  Shape shape;
+  BulletShape bullet;
+  std::unique_ptr<btCollisionObject> object;
+  std::shared_ptr<const SignedDistanceField> sdf;  // closed meshes of mesh-only bodies
+  std::vector<int> vertex_triangle;                // a triangle using each vertex (SDF pairs)
+  Transform world;                                 // shape frame in world, this call
+};
+
+bool isA(const ShapeRecord& x, const ShapeRecord& y) {
+  const bool xd = x.body_type == BodyType::Dynamic, yd = y.body_type == BodyType::Dynamic;
+  if (xd != yd) return xd;
+  return x.body < y.body;
+}
+
+}  // namespace
+
+struct CollisionDetector::Impl {
+  // Broadphase filter: same body, two non-dynamic bodies and ignored pairs never pair up.
+  struct PairFilter : btOverlapFilterCallback {
+    const Impl* impl = nullptr;
+    bool needBroadphaseCollision(btBroadphaseProxy* p0, btBroadphaseProxy* p1) const override {
+      const auto* o0 = static_cast<const btCollisionObject*>(p0->m_clientObject);
+      const auto* o1 = static_cast<const btCollisionObject*>(p1->m_clientObject);
+      return impl->shouldCollide(o0->getUserIndex(), o1->getUserIndex());
+    }
+  };
+
+  // A dispatcher that knows its detector (for the near callback) and applies a fixed
+  // contact breaking threshold when the settings give one.
+  struct Dispatcher : btCollisionDispatcher {
+    Impl* impl;
+    Dispatcher(btCollisionConfiguration* config, Impl* owner)
+        : btCollisionDispatcher(config), impl(owner) {}
+    btPersistentManifold* getNewManifold(const btCollisionObject* b0,
+                                         const btCollisionObject* b1) override {
+      btPersistentManifold* m = btCollisionDispatcher::getNewManifold(b0, b1);
+      if (impl->settings.contact_margin > 0) {
+        m->setContactBreakingThreshold(static_cast<btScalar>(impl->settings.contact_margin));
+      }
+      return m;
+    }
+  };
+
+  CollisionSettings settings;
+  std::vector<ShapeRecord> records;
+  std::vector<BodyType> body_types;
+  std::set<std::pair<BodyId, BodyId>> ignored;
+  std::map<std::shared_ptr<const TriangleMeshData>, std::shared_ptr<const SignedDistanceField>>
+      sdf_cache;
+
+  std::unique_ptr<btDefaultCollisionConfiguration> config;
+  std::unique_ptr<Dispatcher> dispatcher;
+  std::unique_ptr<btDbvtBroadphase> broadphase;
+  std::unique_ptr<btCollisionWorld> world;
+  PairFilter filter;
+  btConvexPlaneCollisionAlgorithm::CreateFunc multipoint, multipoint_swapped;
+
+  std::vector<std::pair<int, int>> sdf_pairs;  // record pairs found by the broadphase
+  std::vector<Contact> contacts;
+  uint64_t next_point_id = 1;
+
+  ~Impl() { release(); }
+
+  bool shouldCollide(int r0, int r1) const {
+    const ShapeRecord& a = records[static_cast<size_t>(r0)];
+    const ShapeRecord& b = records[static_cast<size_t>(r1)];
+    if (a.body == b.body) return false;
+    if (a.body_type != BodyType::Dynamic && b.body_type != BodyType::Dynamic) return false;
+    return !ignored.count({std::min(a.body, b.body), std::max(a.body, b.body)});
+  }
+
+  bool isSdfPair(int r0, int r1) const {
+    return records[static_cast<size_t>(r0)].sdf && records[static_cast<size_t>(r1)].sdf;
+  }
+
+  // Bullet's narrowphase for ordinary pairs; signed-distance pairs are only recorded.
+  static void nearCallback(btBroadphasePair& pair, btCollisionDispatcher& d,
+                           const btDispatcherInfo& info) {
+    Impl* self = static_cast<Dispatcher&>(d).impl;
+    const int r0 = static_cast<btCollisionObject*>(pair.m_pProxy0->m_clientObject)->getUserIndex();
+    const int r1 = static_cast<btCollisionObject*>(pair.m_pProxy1->m_clientObject)->getUserIndex();
+    if (self->isSdfPair(r0, r1)) {
+      self->sdf_pairs.emplace_back(r0, r1);
+      return;
+    }
+    btCollisionDispatcher::defaultNearCallback(pair, d, info);
+  }
+
+  void release() {
+    // The world removes its objects' proxies, so it goes before the objects and broadphase.
+    world.reset();
+    records.clear();
+    broadphase.reset();
+    dispatcher.reset();
+    config.reset();
+  }
+
+  void createWorld();
+  void addBody(BodyId id, const Body& body, bool mesh_only);
+  void collectManifolds();
+  void collectSdf(int r0, int r1);
+  void addSdfHits(const ShapeRecord& field, const ShapeRecord& query, bool field_is_a);
+};
+
+void CollisionDetector::Impl::createWorld() {
+  config = std::make_unique<btDefaultCollisionConfiguration>();
+  dispatcher = std::make_unique<Dispatcher>(config.get(), this);
+  dispatcher->setDispatcherFlags(btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
+  dispatcher->setNearCallback(&Impl::nearCallback);
+  // Flat-bottomed shapes on planes: perturbed support queries find every corner at once
+  // (spheres keep the single exact point).
+  multipoint.m_numPerturbationIterations = 8;
+  multipoint.m_minimumPointsPerturbationThreshold = 4;
+  multipoint_swapped = multipoint;
+  multipoint_swapped.m_swapped = true;
+  for (int type : {BOX_SHAPE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE, CAPSULE_SHAPE_PROXYTYPE,
+                   CONVEX_HULL_SHAPE_PROXYTYPE}) {
+    dispatcher->registerCollisionCreateFunc(type, STATIC_PLANE_PROXYTYPE, &multipoint);
+    dispatcher->registerCollisionCreateFunc(STATIC_PLANE_PROXYTYPE, type, &multipoint_swapped);
+  }
+  broadphase = std::make_unique<btDbvtBroadphase>();
+  world = std::make_unique<btCollisionWorld>(dispatcher.get(), broadphase.get(), config.get());
+  filter.impl = this;
+  world->getPairCache()->setOverlapFilterCallback(&filter);
+}
+
+void CollisionDetector::Impl::addBody(BodyId id, const Body& body, bool mesh_only) {
+  for (size_t s = 0; s < body.shapes.size(); ++s) {
+    ShapeRecord rec;
+    rec.body = id;
+    rec.index = static_cast<int>(s);
+    rec.body_type = body.type;
+    rec.shape = body.shapes[s];
+    rec.bullet = makeBulletShape(rec.shape, body.type);
+    // Closed meshes of bodies made only of meshes get a (cached) signed distance field.
+    if (mesh_only && settings.mesh_pairs == MeshPairMode::Auto && isClosedMesh(*rec.shape.mesh)) {
+      auto& cached = sdf_cache[rec.shape.mesh];
+      if (!cached) cached = SignedDistanceField::build(*rec.shape.mesh, settings.sdf_resolution);
+      rec.sdf = cached;
+      rec.vertex_triangle.assign(rec.shape.mesh->vertices.size(), -1);
+      for (size_t t = 0; t < rec.shape.mesh->triangles.size(); ++t) {
+        for (int v : rec.shape.mesh->triangles[t]) {
+          rec.vertex_triangle[static_cast<size_t>(v)] = static_cast<int>(t);
+        }
+      }
+    }
+    rec.world = body.pose * rec.shape.local;
+    rec.object = std::make_unique<btCollisionObject>();
+    rec.object->setCollisionShape(rec.bullet.shape.get());
+    rec.object->setWorldTransform(toBt(rec.world));
+    rec.object->setUserIndex(static_cast<int>(records.size()));
+    rec.object->setActivationState(DISABLE_DEACTIVATION);
+    if (body.type == BodyType::Static) {
+      rec.object->setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
+    } else if (body.type == BodyType::Kinematic) {
+      rec.object->setCollisionFlags(btCollisionObject::CF_KINEMATIC_OBJECT);
+    }
+    records.push_back(std::move(rec));
+  }
+}
+
+void CollisionDetector::Impl::collectManifolds() {
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    const ShapeRecord& r0 = records[static_cast<size_t>(manifold->getBody0()->getUserIndex())];
+    const ShapeRecord& r1 = records[static_cast<size_t>(manifold->getBody1()->getUserIndex())];
+    const bool swap = !isA(r0, r1);
+    const ShapeRecord& ra = swap ? r1 : r0;
+    const ShapeRecord& rb = swap ? r0 : r1;
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      btManifoldPoint& pt = manifold->getContactPoint(p);
+      // A persistent id per manifold point, kept by Bullet while the point is matched.
+      if (!pt.m_userPersistentData) {
+        pt.m_userPersistentData = reinterpret_cast<void*>(static_cast<uintptr_t>(next_point_id++));
+      }
+      const auto point_id =
+          static_cast<uint64_t>(reinterpret_cast<uintptr_t>(pt.m_userPersistentData));
+      // Witness points from the local points through the double-precision poses.
+      Contact c;
+      c.body_a = ra.body, c.body_b = rb.body;
+      c.shape_a = ra.index, c.shape_b = rb.index;
+      const Vec3 w0 = r0.world.apply(fromBt(pt.m_localPointA));
+      const Vec3 w1 = r1.world.apply(fromBt(pt.m_localPointB));
+      const Vec3 n = fromBt(pt.m_normalWorldOnB).normalized();
+      c.witness_a = swap ? w1 : w0;
+      c.witness_b = swap ? w0 : w1;
+      c.normal = swap ? Vec3(-n) : n;
+      // Triangle indices of static meshes.
+      const int f0 = r0.shape.type == ShapeType::TriangleMesh && r0.body_type != BodyType::Dynamic
+                         ? pt.m_index0
+                         : -1;
+      const int f1 = r1.shape.type == ShapeType::TriangleMesh && r1.body_type != BodyType::Dynamic
+                         ? pt.m_index1
+                         : -1;
+      c.feature_a = swap ? f1 : f0;
+      c.feature_b = swap ? f0 : f1;
+      finishContact(c, ra.shape, ra.world, rb.shape, rb.world);
+      if (c.phi < 0 && !settings.report_gaps) continue;
+      c.key = contactKey(c, point_id);
+      contacts.push_back(c);
+    }
+  }
+}
+
+void CollisionDetector::Impl::addSdfHits(const ShapeRecord& field, const ShapeRecord& query,
+                                         bool field_is_a) {
+  // Query points: the other mesh's vertices; spacing and threshold in grid cells.
+  SdfQuery q;
+  const double cell = field.sdf->cellSize();
+  q.max_distance =
+      settings.report_gaps ? (settings.contact_margin > 0 ? settings.contact_margin : cell) : 0.0;
+  q.max_hits = settings.sdf_max_contacts;
+  q.min_spacing = settings.sdf_min_spacing * cell;
+  const auto hits = sdfHits(*field.sdf, field.world, query.shape.mesh->vertices, query.world, q);
+  for (const SdfHit& h : hits) {
+    // The query vertex is the deepest point of its shape; the field gives the surface point.
+    Contact c;
+    const ShapeRecord& ra = field_is_a ? field : query;
+    const ShapeRecord& rb = field_is_a ? query : field;
+    c.body_a = ra.body, c.body_b = rb.body;
+    c.shape_a = ra.index, c.shape_b = rb.index;
+    const int query_triangle = query.vertex_triangle[static_cast<size_t>(h.vertex)];
+    c.witness_a = field_is_a ? h.surface : h.point;
+    c.witness_b = field_is_a ? h.point : h.surface;
+    c.normal = field_is_a ? Vec3(-h.outward) : h.outward;
+    c.feature_a = field_is_a ? h.triangle : query_triangle;
+    c.feature_b = field_is_a ? query_triangle : h.triangle;
+    c.phi = (c.witness_b - c.witness_a).dot(c.normal);
+    c.point = 0.5 * (c.witness_a + c.witness_b);
+    // Keyed by the query vertex and the direction of the query.
+    c.key = contactKey(
+        c, (static_cast<uint64_t>(h.vertex) << 1 | (field_is_a ? 1u : 0u)) | (uint64_t{1} << 62));
+    contacts.push_back(c);
+  }
+}
+
+void CollisionDetector::Impl::collectSdf(int r0, int r1) {
+  const ShapeRecord& x = records[static_cast<size_t>(r0)];
+  const ShapeRecord& y = records[static_cast<size_t>(r1)];
+  const bool x_is_a = isA(x, y);
+  // Each mesh's vertices against the other's field.
+  addSdfHits(x, y, x_is_a);
+  addSdfHits(y, x, !x_is_a);
+}
+
+CollisionDetector::CollisionDetector() : impl_(std::make_unique<Impl>()) {}
+CollisionDetector::~CollisionDetector() = default;
+
+void CollisionDetector::setBodies(std::span<const Body> bodies, const CollisionSettings& settings) {
+  if (settings.sdf_max_contacts < 1) {
+    throw Error("collision: sdf_max_contacts must be at least 1");
+  }
+  Impl& s = *impl_;
+  s.release();
+  s.settings = settings;
+  s.contacts.clear();
+  s.body_types.clear();
+  s.createWorld();
+  // Records for every shape of every body, then the Bullet objects.
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    const Body& body = bodies[b];
+    const bool mesh_only = !body.shapes.empty() &&
+                           std::all_of(body.shapes.begin(), body.shapes.end(), [](const Shape& sh) {
+                             return sh.type == ShapeType::TriangleMesh;
+                           });
+    s.body_types.push_back(body.type);
+    s.addBody(static_cast<BodyId>(b), body, mesh_only);
+  }
+  for (ShapeRecord& rec : s.records) s.world->addCollisionObject(rec.object.get());
+}
+
+const std::vector<Contact>& CollisionDetector::detect(std::span<const Body> bodies) {
+  Impl& s = *impl_;
+  if (bodies.size() != s.body_types.size()) {
+    throw Error("collision: detect got " + std::to_string(bodies.size()) +
+                " bodies, setBodies had " + std::to_string(s.body_types.size()));
+  }
+  // Poses of this call, in double for the contact geometry and in float for Bullet.
+  for (ShapeRecord& rec : s.records) {
+    rec.world = bodies[rec.body].pose * rec.shape.local;
+    rec.object->setWorldTransform(toBt(rec.world));
+  }
+  s.contacts.clear();
+  s.sdf_pairs.clear();
+  if (s.world) s.world->performDiscreteCollisionDetection();
+  if (s.dispatcher) s.collectManifolds();
+  for (const auto& [r0, r1] : s.sdf_pairs) s.collectSdf(r0, r1);
+  // Deterministic order (SPEC: same input, same contacts).
+  std::sort(s.contacts.begin(), s.contacts.end(), [](const Contact& a, const Contact& b) {
+    return std::tie(a.body_a, a.body_b, a.key) < std::tie(b.body_a, b.body_b, b.key);
+  });
+  return s.contacts;
+}
+
+void CollisionDetector::ignorePair(BodyId a, BodyId b) {
+  Impl& s = *impl_;
+  s.ignored.insert({std::min(a, b), std::max(a, b)});
+  if (!s.world) return;
+  // Pairs already found stay in Bullet's cache: remove them (and their manifolds) now.
+  for (ShapeRecord& x : s.records) {
+    if (x.body != a) continue;
+    for (ShapeRecord& y : s.records) {
+      if (y.body != b) continue;
+      s.world->getPairCache()->removeOverlappingPair(
+          x.object->getBroadphaseHandle(), y.object->getBroadphaseHandle(), s.dispatcher.get());
+    }
+  }
+}
+
+}  // namespace asperity

@@ -1,0 +1,35 @@
+// Contacts from a signed distance field queried with another shape's surface points (the
+// vertices of its mesh): the concave-mesh path of the collision stage.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "asperity/collision/signed_distance_field.hpp"
+#include "asperity/math/types.hpp"
+
+namespace asperity::collision_detail {
+
+// One surface point of the query shape inside (or near) the field's shape.
+struct SdfHit {
+  int vertex = -1;        // index of the query point
+  int triangle = -1;      // closest triangle of the field's mesh
+  Vec3 point;             // the query point (world)
+  Vec3 surface;           // the nearest point of the field's surface (world)
+  Vec3 outward;           // the field shape's outward normal (world)
+  double distance = 0.0;  // signed distance of `point` (< 0 inside), m
+};
+
+struct SdfQuery {
+  double max_distance = 0.0;  // report points with distance below this (m)
+  int max_hits = 32;          // deepest first
+  double min_spacing = 0.0;   // kept hits lie at least this far apart (m)
+};
+
+// Queries `points` (in the frame `points_world`) against `field` (in `field_world`) and
+// returns the kept hits, deepest first (ties by vertex index, so the order is deterministic).
+std::vector<SdfHit> sdfHits(const SignedDistanceField& field, const Transform& field_world,
+                            std::span<const Vec3> points, const Transform& points_world,
+                            const SdfQuery& query);
+
+}  // namespace asperity::collision_detail
