@@ -1,0 +1,39 @@
+// Collision shapes in a body's local frame. Every shape carries the Surface of its faces.
+// Local axes: capsules and cylinders run along local z; planes are {x : n.x = offset}.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "asperity/geometry/surface.hpp"
+#include "asperity/math/types.hpp"
+
+namespace asperity {
+
+enum class ShapeType { Box, Sphere, Capsule, Cylinder, Plane, ConvexHull, TriangleMesh };
+
+// Triangles with optional per-vertex UVs (meshes from OBJ keep theirs).
+struct TriangleMeshData {
+  std::vector<Vec3> vertices;
+  std::vector<Vec2> uvs;  // empty or one per vertex
+  std::vector<std::array<int, 3>> triangles;
+  std::string source_file;  // OBJ path when loaded from a file (for saving scenes back)
+};
+
+struct Shape {
+  ShapeType type = ShapeType::Box;
+  Transform local;  // shape frame relative to the body frame (compounds = several shapes)
+
+  Vec3 half_extents = Vec3(0.1, 0.1, 0.1);  // Box (unit: m)
+  double radius = 0.1;                      // Sphere, Capsule, Cylinder (unit: m)
+  double half_height = 0.1;                 // Capsule, Cylinder: half length of the axis (m)
+  Vec3 plane_normal = Vec3::UnitZ();        // Plane (static bodies only)
+  double plane_offset = 0.0;                // Plane (m)
+  std::shared_ptr<const TriangleMeshData> mesh;  // ConvexHull (points) or TriangleMesh
+
+  double density = 1000.0;  // kg/m^3, for mass and inertia of dynamic bodies
+  Surface surface;
+};
+
+}  // namespace asperity

@@ -1,0 +1,37 @@
+// The stage between collision and solve: it fills every contact's per-direction friction
+// coefficients (Contact::mu, covered_pixels, fallback). One call per step for all contacts.
+// Implementations: constant (mu0 only), cone (whole-texture cones), and the patch samplers
+// (CPU reference, OpenGL) of SPEC 3.
+#pragma once
+
+#include <span>
+#include <string>
+
+#include "asperity/collision/contact.hpp"
+#include "asperity/dynamics/body.hpp"
+
+namespace asperity {
+
+// What every provider needs to know (SPEC 3, Eq. 7).
+struct FrictionSettings {
+  int directions = 4;         // N
+  double mu0 = 0.2;           // nominal coefficient (unit: 1)
+  float mu_max = 4.0f;        // clamp of the ploughing term
+  double patch_width = 0.02;  // w (m)
+  int patch_resolution = 16;  // R (pixels per side)
+};
+
+class FrictionProvider {
+ public:
+  virtual ~FrictionProvider() = default;
+  virtual std::string name() const = 0;
+  // Fills mu (count = settings.directions), covered_pixels and fallback of every contact.
+  // Contacts already carry their frame (t, b). Body A of a contact is bodies[c.body_a].
+  virtual void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
+                                   const FrictionSettings& settings) = 0;
+  // Time spent in the last call, split as the paper's Table 1 does (ms).
+  virtual double lastPatchTimeMs() const { return 0.0; }
+  virtual double lastAveragingTimeMs() const { return 0.0; }
+};
+
+}  // namespace asperity
