@@ -3,6 +3,7 @@
 #include "asperity/friction/limit_surface.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -19,7 +20,7 @@ double cross(const Vec2& a, const Vec2& b) {
 }
 
 // Direction d_k (SPEC 1), exact on the axes when N % 4 == 0 so that N = 4 matches the box.
-Vec2 direction(int k, int n) {
+Vec2 computeDirection(int k, int n) {
   if (n % 4 == 0 && k % (n / 4) == 0) {
     static constexpr double kAxes[4][2] = {{1.0, 0.0}, {0.0, 1.0}, {-1.0, 0.0}, {0.0, -1.0}};
     const int q = k / (n / 4);
@@ -27,6 +28,21 @@ Vec2 direction(int k, int n) {
   }
   const double angle = 2.0 * kPi * k / n;
   return Vec2(std::cos(angle), std::sin(angle));
+}
+
+// d_k from a table built once for every N (the projections must not call sin/cos per edge).
+const Vec2& direction(int k, int n) {
+  using Row = std::array<Vec2, kMaxDirections>;
+  static const std::array<Row, kMaxDirections + 1> table = [] {
+    std::array<Row, kMaxDirections + 1> t{};
+    for (int count = kMinDirections; count <= kMaxDirections; ++count) {
+      for (int i = 0; i < count; ++i) {
+        t[static_cast<size_t>(count)][static_cast<size_t>(i)] = computeDirection(i, count);
+      }
+    }
+    return t;
+  }();
+  return table[static_cast<size_t>(n)][static_cast<size_t>(k)];
 }
 
 // The polygon's vertex mu_k d_k scaled by lambda_n (negative coefficients count as 0).
@@ -97,8 +113,8 @@ Vec2 PolygonLimit::project(const Vec2& lambda_tb, double lambda_n) const {
   if (angle < 0.0) angle += 2.0 * kPi;
   if (!(angle >= 0.0)) angle = 0.0;  // NaN input: keep the index valid, NaN flows through.
   const int k = std::clamp(static_cast<int>(angle * n / (2.0 * kPi)), 0, n - 1);
-  const Vec2 d0 = direction(k, n);
-  const Vec2 d1 = direction((k + 1) % n, n);
+  const Vec2& d0 = direction(k, n);
+  const Vec2& d1 = direction((k + 1) % n, n);
   // x = a d_k + c d_k+1 with a, c >= 0; inside the triangle (0, r0 d_k, r1 d_k+1) iff
   // a r1 + c r0 <= r0 r1 with a <= r0 and c <= r1 (the last two matter when r0 or r1 is 0).
   const double sin_w = cross(d0, d1);
