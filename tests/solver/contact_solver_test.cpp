@@ -1,0 +1,275 @@
+// The PGS contact solver on hand-made contacts: normal support, friction bounds of each limit
+// surface (SPEC 1 signs), convergence, warm starting and split impulses.
+#include "asperity/solver/contact_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "support/test_support.hpp"
+
+namespace asperity {
+namespace {
+
+using test::near;
+
+constexpr double kDt = 0.01;
+constexpr double kG = 9.81;
+
+// A static ground (body 0) and point masses (no rotation) or unit cubes above it.
+std::vector<Body> ground() {
+  Body g;
+  g.type = BodyType::Static;
+  return {g};
+}
+
+Body particle(const Vec3& position, double mass, const Vec3& velocity) {
+  Body b;
+  b.pose.position = position;
+  b.inverse_mass = 1.0 / mass;
+  b.inverse_inertia_local = Vec3::Zero();  // infinite inertia: friction makes no torque
+  b.linear_velocity = velocity;
+  return b;
+}
+
+// A contact of `a` on the ground at `point` with normal +z, frame (x, y, z), given mu.
+Contact groundContact(BodyId a, const Vec3& point, const DirectionalMu& mu, uint64_t key = 1) {
+  Contact c;
+  c.body_a = a;
+  c.body_b = 0;
+  c.point = c.witness_a = c.witness_b = point;
+  c.normal = Vec3::UnitZ();
+  c.t = Vec3::UnitX();
+  c.b = Vec3::UnitY();
+  c.mu = mu;
+  c.key = key;
+  return c;
+}
+
+// mu along +t, +b, -t, -b (N = 4).
+DirectionalMu box(float pt, float pb, float nt, float nb) {
+  DirectionalMu mu = DirectionalMu::uniform(4, 0.0f);
+  mu.mu = {pt, pb, nt, nb};
+  return mu;
+}
+
+SolverSettings settings(LimitSurfaceKind kind, double coulomb_mu = 0.5) {
+  SolverSettings s;
+  s.dt = kDt;
+  s.limit_surface = kind;
+  s.coulomb_mu = coulomb_mu;
+  s.warm_starting = false;
+  return s;
+}
+
+// One solve of `bodies` with `contacts`; returns the solved contacts.
+std::vector<Contact> solveOnce(std::vector<Body>& bodies, std::vector<Contact> contacts,
+                               const SolverSettings& s, int iterations = 20) {
+  ContactSolver solver;
+  solver.begin(bodies, s);
+  solver.setContacts(contacts, true);
+  solver.iterate(iterations);
+  solver.finish(bodies, contacts);
+  return contacts;
+}
+
+TEST(ContactSolver, NormalImpulseStopsFallingMass) {
+  // A 2 kg mass that gained -g dt this step: lambda_n = m g dt, v_z -> 0.
+  std::vector<Body> bodies = ground();
+  bodies.push_back(particle(Vec3(0, 0, 0.1), 2.0, Vec3(0, 0, -kG * kDt)));
+  const auto c = solveOnce(bodies, {groundContact(1, Vec3::Zero(), box(1, 1, 1, 1))},
+                           settings(LimitSurfaceKind::Box));
+  EXPECT_TRUE(near(c[0].lambda_n, 2.0 * kG * kDt, 1e-12));
+  EXPECT_TRUE(near(bodies[1].linear_velocity.z(), 0.0, 0.0, 1e-12));
+}
+
+TEST(ContactSolver, SeparatingContactPushesNothing) {
+  std::vector<Body> bodies = ground();
+  bodies.push_back(particle(Vec3(0, 0, 0.1), 1.0, Vec3(0, 0, 1.0)));
+  const auto c = solveOnce(bodies, {groundContact(1, Vec3::Zero(), box(1, 1, 1, 1))},
+                           settings(LimitSurfaceKind::Box));
+  EXPECT_EQ(c[0].lambda_n, 0.0);
+  EXPECT_EQ(bodies[1].linear_velocity.z(), 1.0);
+}
+
+// A mass sliding at v along direction (cos a, sin a) with normal load m g dt.
+struct Slide {
+  double lambda_t, lambda_b, vx, vy;
+};
+Slide slide(LimitSurfaceKind kind, const DirectionalMu& mu, double angle, double speed) {
+  std::vector<Body> bodies = ground();
+  const double m = 1.0;
+  bodies.push_back(particle(Vec3(0, 0, 0.1), m,
+                            Vec3(speed * std::cos(angle), speed * std::sin(angle), -kG * kDt)));
+  const auto c = solveOnce(bodies, {groundContact(1, Vec3::Zero(), mu)}, settings(kind, 0.3));
+  return {c[0].lambda_t, c[0].lambda_b, bodies[1].linear_velocity.x(),
+          bodies[1].linear_velocity.y()};
+}
+
+TEST(ContactSolver, BoxLimitResistsEachDirectionWithItsOwnMu) {
+  // SPEC 1: A sliding along +t is resisted along -t, bounded by mu_{-t}; and so on.
+  const DirectionalMu mu = box(0.1f, 0.2f, 0.3f, 0.4f);
+  const double ln = kG * kDt;
+  const Slide pt = slide(LimitSurfaceKind::Box, mu, 0.0, 1.0);
+  EXPECT_TRUE(near(pt.lambda_t, -0.3 * ln, 1e-6));
+  const Slide nt = slide(LimitSurfaceKind::Box, mu, kPi, 1.0);
+  EXPECT_TRUE(near(nt.lambda_t, 0.1 * ln, 1e-6));
+  const Slide pb = slide(LimitSurfaceKind::Box, mu, 0.5 * kPi, 1.0);
+  EXPECT_TRUE(near(pb.lambda_b, -0.4 * ln, 1e-6));
+  const Slide nb = slide(LimitSurfaceKind::Box, mu, 1.5 * kPi, 1.0);
+  EXPECT_TRUE(near(nb.lambda_b, 0.2 * ln, 1e-6));
+  // The velocity drops by exactly the bounded impulse (m = 1).
+  EXPECT_TRUE(near(pt.vx, 1.0 - 0.3 * ln, 1e-7));
+}
+
+TEST(ContactSolver, SlowSlideSticksWithinTheBound) {
+  // Tangential momentum below mu lambda_n: friction stops the mass completely.
+  const Slide s = slide(LimitSurfaceKind::Box, box(0.5f, 0.5f, 0.5f, 0.5f), 0.3, 0.01);
+  EXPECT_TRUE(near(s.vx, 0.0, 0.0, 1e-12));
+  EXPECT_TRUE(near(s.vy, 0.0, 0.0, 1e-12));
+}
+
+TEST(ContactSolver, CoulombUsesMu0InEveryDirection) {
+  // The disc of radius mu0 lambda_n, whatever the contact's coefficients say.
+  const DirectionalMu ignored = box(2.0f, 2.0f, 2.0f, 2.0f);
+  for (int k = 0; k < 8; ++k) {
+    const double angle = 2.0 * kPi * k / 8;
+    const Slide s = slide(LimitSurfaceKind::Coulomb, ignored, angle, 1.0);
+    EXPECT_TRUE(near(std::hypot(s.lambda_t, s.lambda_b), 0.3 * kG * kDt, 1e-9)) << k;
+    // Friction opposes the sliding direction.
+    EXPECT_TRUE(
+        near(std::atan2(-s.lambda_b, -s.lambda_t), std::remainder(angle, 2 * kPi), 0.0, 1e-9))
+        << k;
+  }
+}
+
+TEST(ContactSolver, PolygonLimitBoundsDiagonalSlides) {
+  // Isotropic N = 8 polygon of radius 0.4: a diagonal slide is resisted by the polygon's
+  // vertex (mu 0.4 along the diagonal), not the box's corner (0.4 sqrt 2).
+  const DirectionalMu mu = DirectionalMu::uniform(8, 0.4f);
+  const Slide s = slide(LimitSurfaceKind::Polygon, mu, 0.25 * kPi, 1.0);
+  EXPECT_TRUE(near(std::hypot(s.lambda_t, s.lambda_b), 0.4 * kG * kDt, 1e-6));
+}
+
+// A column of `n` unit-mass cubes (rotating) on the ground with 4 corner contacts each.
+struct Column {
+  std::vector<Body> bodies;
+  std::vector<Contact> contacts;
+};
+Column column(int n) {
+  Column col{ground(), {}};
+  const double h = 0.1;
+  for (int i = 0; i < n; ++i) {
+    Body b = particle(Vec3(0, 0, h + 2 * h * i), 1.0, Vec3(0, 0, -kG * kDt));
+    b.inverse_inertia_local = Vec3::Constant(1.0 / (2.0 / 3.0 * h * h));
+    col.bodies.push_back(b);
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 corner((k & 1) ? h : -h, (k & 2) ? h : -h, 2 * h * i);
+      Contact c = groundContact(static_cast<BodyId>(i + 1), corner, box(0.5f, 0.5f, 0.5f, 0.5f),
+                                static_cast<uint64_t>(4 * i + k + 1));
+      c.body_b = static_cast<BodyId>(i);
+      col.contacts.push_back(c);
+    }
+  }
+  return col;
+}
+
+// Distance of the body velocities after `iterations` sweeps from a converged reference (the
+// velocities are unique; the four coplanar contacts' impulse split is not).
+double velocityError(int iterations) {
+  Column ref = column(6);
+  solveOnce(ref.bodies, ref.contacts, settings(LimitSurfaceKind::Box), 20000);
+  Column col = column(6);
+  solveOnce(col.bodies, col.contacts, settings(LimitSurfaceKind::Box), iterations);
+  double err = 0.0;
+  for (size_t i = 0; i < ref.bodies.size(); ++i) {
+    err += (ref.bodies[i].linear_velocity - col.bodies[i].linear_velocity).squaredNorm() +
+           (ref.bodies[i].angular_velocity - col.bodies[i].angular_velocity).squaredNorm();
+  }
+  return std::sqrt(err);
+}
+
+TEST(ContactSolver, ResidualFallsAsIterationsGrow) {
+  const double e5 = velocityError(5), e20 = velocityError(20), e80 = velocityError(80);
+  EXPECT_LT(e20, 0.7 * e5);
+  EXPECT_LT(e80, 0.5 * e20);
+  // And the sweep's own change measure falls too.
+  Column a = column(6), b = column(6);
+  ContactSolver sa, sb;
+  sa.begin(a.bodies, settings(LimitSurfaceKind::Box));
+  sa.setContacts(a.contacts, true);
+  sa.iterate(5);
+  sb.begin(b.bodies, settings(LimitSurfaceKind::Box));
+  sb.setContacts(b.contacts, true);
+  sb.iterate(80);
+  EXPECT_LT(sb.lastDelta(), 0.1 * sa.lastDelta());
+}
+
+TEST(ContactSolver, ColumnSupportsItsWeight) {
+  // Converged: the bottom contacts carry the whole column, n m g dt.
+  Column col = column(6);
+  const auto c = solveOnce(col.bodies, col.contacts, settings(LimitSurfaceKind::Box), 20000);
+  double bottom = 0.0;
+  for (int k = 0; k < 4; ++k) bottom += c[static_cast<size_t>(k)].lambda_n;
+  EXPECT_TRUE(near(bottom, 6.0 * kG * kDt, 1e-6));
+}
+
+TEST(ContactSolver, WarmStartReusesLastImpulsesByKey) {
+  // Same contacts twice: the second solve starts converged, so one sweep barely changes it.
+  Column col = column(6);
+  SolverSettings s = settings(LimitSurfaceKind::Box);
+  s.warm_starting = true;
+  ContactSolver solver;
+  std::vector<Contact> contacts = col.contacts;
+  std::vector<Body> bodies = col.bodies;
+  solver.begin(bodies, s);
+  solver.setContacts(contacts, true);
+  solver.iterate(20000);
+  solver.finish(bodies, contacts);
+  const double cold = [&] {
+    Column fresh = column(6);
+    ContactSolver cs;
+    cs.begin(fresh.bodies, s);
+    cs.setContacts(fresh.contacts, true);
+    cs.iterate(1);
+    return cs.lastDelta();
+  }();
+  std::vector<Body> again = column(6).bodies;
+  solver.begin(again, s);
+  solver.setContacts(col.contacts, true);
+  solver.iterate(1);
+  EXPECT_LT(solver.lastDelta(), 1e-6 * cold);
+}
+
+TEST(ContactSolver, SplitImpulseCorrectsPenetrationWithoutVelocity) {
+  // 1 cm deep, at rest: pseudo-velocity pushes out (baumgarte (phi - slop) / dt), the real
+  // velocity stays zero (no energy added).
+  std::vector<Body> bodies = ground();
+  bodies.push_back(particle(Vec3(0, 0, 0.1), 1.0, Vec3::Zero()));
+  Contact c = groundContact(1, Vec3::Zero(), box(0.5f, 0.5f, 0.5f, 0.5f));
+  c.phi = 0.01;
+  SolverSettings s = settings(LimitSurfaceKind::Box);
+  s.slop = 0.001;
+  ContactSolver solver;
+  std::vector<Contact> contacts{c};
+  solver.begin(bodies, s);
+  solver.setContacts(contacts, true);
+  solver.iterate(20);
+  solver.finish(bodies, contacts);
+  EXPECT_TRUE(near(solver.pseudoLinear(1).z(), 0.2 * 0.009 / kDt, 1e-9));
+  EXPECT_EQ(bodies[1].linear_velocity.z(), 0.0);
+}
+
+TEST(ContactSolver, SpeculativeContactLetsTheGapClose) {
+  // 1 mm apart, approaching at 5 cm/s: the contact allows 0.1 m/s of approach, so no impulse.
+  std::vector<Body> bodies = ground();
+  bodies.push_back(particle(Vec3(0, 0, 0.1), 1.0, Vec3(0, 0, -0.05)));
+  Contact c = groundContact(1, Vec3::Zero(), box(0.5f, 0.5f, 0.5f, 0.5f));
+  c.phi = -0.001;
+  const auto out = solveOnce(bodies, {c}, settings(LimitSurfaceKind::Box));
+  EXPECT_EQ(out[0].lambda_n, 0.0);
+  EXPECT_EQ(bodies[1].linear_velocity.z(), -0.05);
+}
+
+}  // namespace
+}  // namespace asperity
