@@ -81,6 +81,18 @@ void BM_PolygonProject16(benchmark::State& state) {
 }
 BENCHMARK(BM_PolygonProject16);
 
+// One polygon projection of a point inside (the O(1) wedge test alone), N = 16.
+void BM_PolygonInside16(benchmark::State& state) {
+  const PolygonLimit poly{DirectionalMu::uniform(16, 0.4f)};
+  Vec2 x(0.1, 0.05);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(x);
+    Vec2 y = poly.project(x, 1.0);
+    benchmark::DoNotOptimize(y);
+  }
+}
+BENCHMARK(BM_PolygonInside16);
+
 }  // namespace
 
 BENCHMARK_MAIN();

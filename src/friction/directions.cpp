@@ -19,25 +19,44 @@ void checkDirectionCount(int n, const char* what) {
   }
 }
 
+// SPEC 1: d_k = cos(2 pi k / N) t + sin(2 pi k / N) b, with t, b, -t, -b exact when
+// N % 4 == 0 (so that N = 4 reproduces the box exactly).
+Vec2 computeDirection(int k, int n) {
+  if (n % 4 == 0 && k % (n / 4) == 0) {
+    static constexpr double kAxes[4][2] = {{1.0, 0.0}, {0.0, 1.0}, {-1.0, 0.0}, {0.0, -1.0}};
+    const int q = k / (n / 4);
+    return Vec2(kAxes[q][0], kAxes[q][1]);
+  }
+  const double angle = 2.0 * kPi * k / n;
+  return Vec2(std::cos(angle), std::sin(angle));
+}
+
+// Every direction set for N in [kMinDirections, kMaxDirections], built on first use.
+using DirectionRow = std::array<Vec2, kMaxDirections>;
+const std::array<DirectionRow, kMaxDirections + 1>& directionTable() {
+  static const std::array<DirectionRow, kMaxDirections + 1> table = [] {
+    std::array<DirectionRow, kMaxDirections + 1> t{};
+    for (int count = kMinDirections; count <= kMaxDirections; ++count) {
+      for (int i = 0; i < count; ++i) {
+        t[static_cast<size_t>(count)][static_cast<size_t>(i)] = computeDirection(i, count);
+      }
+    }
+    return t;
+  }();
+  return table;
+}
+
 }  // namespace
 
-std::vector<Vec2> sampleDirections(int n) {
+std::span<const Vec2> sampleDirectionsView(int n) {
   checkDirectionCount(n, "sampleDirections");
-  std::vector<Vec2> dirs(static_cast<size_t>(n));
-  // SPEC 1: d_k = cos(2 pi k / N) t + sin(2 pi k / N) b.
-  for (int k = 0; k < n; ++k) {
-    const double angle = 2.0 * kPi * k / n;
-    dirs[static_cast<size_t>(k)] = Vec2(std::cos(angle), std::sin(angle));
-  }
-  // Snap the axis directions so that t, b, -t, -b are exact when N % 4 == 0.
-  if (n % 4 == 0) {
-    const int q = n / 4;
-    dirs[0] = Vec2(1.0, 0.0);
-    dirs[static_cast<size_t>(q)] = Vec2(0.0, 1.0);
-    dirs[static_cast<size_t>(2 * q)] = Vec2(-1.0, 0.0);
-    dirs[static_cast<size_t>(3 * q)] = Vec2(0.0, -1.0);
-  }
-  return dirs;
+  return std::span<const Vec2>(directionTable()[static_cast<size_t>(n)].data(),
+                               static_cast<size_t>(n));
+}
+
+std::vector<Vec2> sampleDirections(int n) {
+  const std::span<const Vec2> view = sampleDirectionsView(n);
+  return std::vector<Vec2>(view.begin(), view.end());
 }
 
 DirectionalMu DirectionalMu::uniform(int n, float value) {

@@ -37,6 +37,18 @@ TEST(SampleDirections, AnglesAndUnitLength) {
   }
 }
 
+// The shared view holds the same directions as the vector, for every count.
+TEST(SampleDirections, ViewMatchesVector) {
+  for (int n = kMinDirections; n <= kMaxDirections; ++n) {
+    const auto v = sampleDirections(n);
+    const auto view = sampleDirectionsView(n);
+    ASSERT_EQ(view.size(), v.size());
+    for (size_t k = 0; k < v.size(); ++k) EXPECT_EQ(view[k], v[k]);
+  }
+  EXPECT_THROW(sampleDirectionsView(3), Error);
+  EXPECT_THROW(sampleDirectionsView(65), Error);
+}
+
 // Bad counts throw asperity::Error naming the value.
 TEST(SampleDirections, RejectsBadCounts) {
   for (int n : {-1, 0, 3, 65, 1000}) {

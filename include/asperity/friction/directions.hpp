@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <span>
 #include <vector>
 
 #include "asperity/math/types.hpp"
@@ -16,6 +17,11 @@ inline constexpr int kMaxDirections = 64;
 // Components (along t, along b) of the N sample directions. Throws asperity::Error unless
 // kMinDirections <= n <= kMaxDirections.
 std::vector<Vec2> sampleDirections(int n);
+
+// The same directions as a view of a table built once per process (immutable, no allocation
+// per call): for per-contact code such as samplers and projections. Throws like
+// sampleDirections.
+std::span<const Vec2> sampleDirectionsView(int n);
 
 // Per-direction friction coefficients mu_{d_k} of one contact (Eq. 7), k = 0..count-1.
 struct DirectionalMu {
