@@ -122,6 +122,18 @@ struct RoundTripCase {
   GreenConvention green;
 };
 
+// Readable test names: bits8_rgb_opengl, bits16_rgba_directx, ...
+std::string caseName(const ::testing::TestParamInfo<RoundTripCase>& info) {
+  const RoundTripCase& c = info.param;
+  return "bits" + std::to_string(c.bits) + (c.alpha ? "_rgba" : "_rgb") +
+         (c.green == GreenConvention::OpenGL ? "_opengl" : "_directx");
+}
+
+void PrintTo(const RoundTripCase& c, std::ostream* os) {
+  *os << c.bits << " bit, " << (c.alpha ? "RGBA" : "RGB") << ", "
+      << (c.green == GreenConvention::OpenGL ? "OpenGL" : "DirectX");
+}
+
 class PngRoundTrip : public ::testing::TestWithParam<RoundTripCase> {};
 
 TEST_P(PngRoundTrip, SaveThenLoadIsWithinQuantisation) {
@@ -141,7 +153,8 @@ INSTANTIATE_TEST_SUITE_P(Formats, PngRoundTrip,
                                            RoundTripCase{16, false, GreenConvention::OpenGL},
                                            RoundTripCase{16, true, GreenConvention::OpenGL},
                                            RoundTripCase{8, false, GreenConvention::DirectX},
-                                           RoundTripCase{16, true, GreenConvention::DirectX}));
+                                           RoundTripCase{16, true, GreenConvention::DirectX}),
+                         caseName);
 
 TEST(PngIo, DirectXSavedLoadedAsOpenGLFlipsGreen) {
   const NormalMap map = variedMap(4, 3);
