@@ -35,7 +35,8 @@ float fragmentMu(const Vec3f& m_contact_frame, Side side, const Vec2f& d,
                  float mu_max = kDefaultMuMax);
 
 // The hot kernel: sums[k] += sum_i max(0, gx[i] dx_k + gy[i] dy_k) for every direction k.
-// gx, gy have equal length; sums has directions.size() entries.
+// gx, gy have equal length; sums has directions.size() entries (asperity::Error otherwise).
+// Any length and any direction count; float partial sums per chunk, flushed into double.
 void accumulateDirectionalSums(std::span<const float> gx, std::span<const float> gy,
                                std::span<const Vec2> directions, std::span<double> sums);
 
@@ -46,6 +47,8 @@ struct PatchGains {
   double k_a = 1.0;
   double k_b = 1.0;
 };
+// An empty span stands for a flat surface (all means 0); otherwise both have the same size,
+// in [4, 64] (asperity::Error otherwise).
 DirectionalMu combinePatch(std::span<const double> mean_a, std::span<const double> mean_b,
                            const PatchGains& gains);
 
