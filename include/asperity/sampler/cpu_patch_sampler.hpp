@@ -1,0 +1,45 @@
+// The CPU reference patch sampler (SPEC 3, Sec. 4): per contact, both surfaces' geometry inside
+// the viewing volume is rasterised orthographically along n into R x R pixels (depth clip
+// |z| <= (|phi| + 0.01 w) / 2 around the contact point, back faces discarded), each fragment's
+// meso normal (normal map through the interpolated tangent frame) becomes a ploughing vector
+// (friction/fragment_model.hpp), the pixels covered by both surfaces form P, and the
+// per-direction means over P enter Eq. 7 with mu0 and the bodies' gains. No GPU needed; the
+// OpenGL sampler gives the same numbers. docs/samplers.md describes each step.
+//
+// Surfaces: a contact's shape_a / shape_b (all shapes of the body when -1). k_A, k_B are the
+// gains of those shapes' surfaces (of the first shape when -1); gain masks multiply each
+// fragment. Single-threaded; scratch buffers and mesh BVHs are kept between calls.
+#pragma once
+
+#include <memory>
+
+#include "asperity/sampler/friction_provider.hpp"
+#include "asperity/sampler/patch_sampler.hpp"
+
+namespace asperity {
+
+class CpuPatchSampler : public FrictionProvider {
+ public:
+  CpuPatchSampler();
+  ~CpuPatchSampler() override;
+
+  std::string name() const override { return "cpu"; }
+  // Throws asperity::Error for bad settings (validatePatchSettings), a contact naming a body
+  // or shape that does not exist, or a surface with a bad texture_size.
+  void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
+                           const FrictionSettings& settings) override;
+  double lastPatchTimeMs() const override { return patch_ms_; }
+  double lastAveragingTimeMs() const override { return averaging_ms_; }
+
+  // One contact, optionally with its per-pixel images. Same numbers as computeCoefficients.
+  void sampleContact(std::span<const Body> bodies, Contact& contact,
+                     const FrictionSettings& settings, PatchImages* images = nullptr);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+  double patch_ms_ = 0.0;
+  double averaging_ms_ = 0.0;
+};
+
+}  // namespace asperity

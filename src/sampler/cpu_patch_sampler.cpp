@@ -1,0 +1,159 @@
+// The CPU reference patch sampler (cpu_patch_sampler.hpp): rasterise, shade, average, Eq. 7.
+#include "asperity/sampler/cpu_patch_sampler.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <vector>
+
+#include "asperity/friction/directions.hpp"
+#include "asperity/friction/fragment_model.hpp"
+#include "sampler/patch_common.hpp"
+#include "sampler/patch_geometry.hpp"
+#include "sampler/patch_shade.hpp"
+
+namespace asperity {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msBetween(Clock::time_point a, Clock::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
+
+}  // namespace
+
+// Scratch kept between calls: rasters, fragment arrays, mesh BVHs, sample directions.
+struct CpuPatchSampler::State {
+  patch::MeshCache meshes;
+  patch::GeometryScratch geometry;
+  std::array<patch::SurfaceRaster, 2> raster;  // A, B
+  std::vector<int32_t> in_patch;
+  std::vector<float> gx, gy;
+  std::vector<Vec2> directions;
+  std::array<std::array<double, kMaxDirections>, 2> sums{};
+  double patch_ms = 0.0, averaging_ms = 0.0;
+
+  void prepare(const FrictionSettings& settings);
+  void rasterise(const patch::Volume& volume, const patch::ShapeRange (&ranges)[2]);
+  void sample(std::span<const Body> bodies, Contact& contact, const FrictionSettings& settings,
+              PatchImages* images);
+  void fillImages(const patch::Volume& volume, const FrictionSettings& settings,
+                  PatchImages& images);
+};
+
+void CpuPatchSampler::State::prepare(const FrictionSettings& settings) {
+  // Directions for this N; buffers sized for R x R (no allocation once warm).
+  if (static_cast<int>(directions.size()) != settings.directions) {
+    directions = sampleDirections(settings.directions);
+  }
+  const auto pixels = static_cast<size_t>(settings.patch_resolution * settings.patch_resolution);
+  if (gx.size() < 2 * pixels) {
+    gx.resize(2 * pixels);
+    gy.resize(2 * pixels);
+    in_patch.reserve(pixels);
+  }
+}
+
+void CpuPatchSampler::State::rasterise(const patch::Volume& volume,
+                                       const patch::ShapeRange (&ranges)[2]) {
+  const int pixels = volume.resolution * volume.resolution;
+  // Each surface's shapes into its raster, then P: pixels covered by both.
+  for (int s = 0; s < 2; ++s) {
+    patch::SurfaceRaster& r = raster[static_cast<size_t>(s)];
+    r.reset(s == 0 ? Side::A : Side::B, pixels);
+    const patch::ShapeRange& range = ranges[s];
+    for (int k = range.first; k < range.last; ++k) {
+      patch::rasteriseShape(volume, range.body->shapes[static_cast<size_t>(k)],
+                            patch::shapePose(*range.body, k), meshes, geometry, r);
+    }
+  }
+  in_patch.clear();
+  for (int p = 0; p < pixels; ++p) {
+    if (raster[0].covered(p) && raster[1].covered(p)) in_patch.push_back(p);
+  }
+}
+
+void CpuPatchSampler::State::fillImages(const patch::Volume& volume,
+                                        const FrictionSettings& settings, PatchImages& images) {
+  // Every covered pixel of each surface: its meso normal and Eq. 5 per direction.
+  const int pixels = volume.resolution * volume.resolution;
+  const auto n = static_cast<size_t>(settings.directions);
+  images.resolution = volume.resolution;
+  images.directions = settings.directions;
+  images.in_patch.assign(static_cast<size_t>(pixels), 0);
+  for (int32_t p : in_patch) images.in_patch[static_cast<size_t>(p)] = 1;
+  for (size_t s = 0; s < 2; ++s) {
+    images.covered[s].assign(static_cast<size_t>(pixels), 0);
+    images.normals[s].assign(static_cast<size_t>(pixels), Vec3f::Zero());
+    images.mu[s].assign(static_cast<size_t>(pixels) * n, 0.0f);
+    for (int p = 0; p < pixels; ++p) {
+      if (!raster[s].covered(p)) continue;
+      const patch::Fragment f = patch::shadeFragment(volume, raster[s], p);
+      const Vec2f g = f.gain * ploughingVector(f.m, raster[s].side, settings.mu_max);
+      images.covered[s][static_cast<size_t>(p)] = 1;
+      images.normals[s][static_cast<size_t>(p)] = f.m.normalized();
+      for (size_t k = 0; k < n; ++k) {
+        const float mu = g.dot(directions[k].cast<float>());
+        images.mu[s][static_cast<size_t>(p) * n + k] = mu > 0.0f ? mu : 0.0f;
+      }
+    }
+  }
+}
+
+void CpuPatchSampler::State::sample(std::span<const Body> bodies, Contact& contact,
+                                    const FrictionSettings& settings, PatchImages* images) {
+  const Clock::time_point t0 = Clock::now();
+  prepare(settings);
+  const patch::Volume volume = patch::makeVolume(contact, settings);
+  const patch::ShapeRange ranges[2] = {patch::shapesOf(bodies, contact, Side::A),
+                                       patch::shapesOf(bodies, contact, Side::B)};
+  // Rasterise both surfaces and find P, then shade P into ploughing vectors (A, then B).
+  rasterise(volume, ranges);
+  const size_t count = in_patch.size();
+  const size_t n = directions.size();
+  for (size_t s = 0; s < 2 && count > 0; ++s) {
+    patch::shadePloughing(volume, raster[s], in_patch, settings.mu_max, gx.data() + s * count,
+                          gy.data() + s * count);
+  }
+  const Clock::time_point t1 = Clock::now();
+  // Eq. 8 sums through the friction module's kernel.
+  for (size_t s = 0; s < 2; ++s) {
+    std::fill(sums[s].begin(), sums[s].begin() + static_cast<long>(n), 0.0);
+    if (count == 0) continue;
+    accumulateDirectionalSums(std::span<const float>(gx.data() + s * count, count),
+                              std::span<const float>(gy.data() + s * count, count), directions,
+                              std::span<double>(sums[s].data(), n));
+  }
+  // Eq. 7 (or the fallback).
+  patch::finishContact(contact, std::span<const double>(sums[0].data(), n),
+                       std::span<const double>(sums[1].data(), n), static_cast<int>(count),
+                       patch::gainsOf(ranges[0], ranges[1], settings.mu0));
+  const Clock::time_point t2 = Clock::now();
+  if (images != nullptr) fillImages(volume, settings, *images);
+  patch_ms += msBetween(t0, t1);
+  averaging_ms += msBetween(t1, t2);
+}
+
+CpuPatchSampler::CpuPatchSampler() : state_(std::make_unique<State>()) {}
+CpuPatchSampler::~CpuPatchSampler() = default;
+
+void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& contact,
+                                    const FrictionSettings& settings, PatchImages* images) {
+  validatePatchSettings(settings, "cpu sampler");
+  state_->sample(bodies, contact, settings, images);
+}
+
+void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
+                                          const FrictionSettings& settings) {
+  validatePatchSettings(settings, "cpu sampler");
+  State& st = *state_;
+  st.patch_ms = st.averaging_ms = 0.0;
+  // One contact after the other; scratch is reused.
+  for (Contact& c : contacts) st.sample(bodies, c, settings, nullptr);
+  patch_ms_ = st.patch_ms;
+  averaging_ms_ = st.averaging_ms;
+}
+
+}  // namespace asperity

@@ -1,0 +1,41 @@
+// What the CPU and OpenGL patch samplers share: the viewing volume of a contact (SPEC 3), the
+// surfaces and gains of its two bodies, and the last step of both pipelines (Eqs. 8 and 7).
+#pragma once
+
+#include <span>
+
+#include "asperity/collision/contact.hpp"
+#include "asperity/dynamics/body.hpp"
+#include "asperity/friction/fragment_model.hpp"
+#include "asperity/sampler/friction_provider.hpp"
+#include "sampler/patch_raster.hpp"
+
+namespace asperity::patch {
+
+// The contact's volume: centre contact.point; axes t (orthogonalised against n), b = n x t, n;
+// w x w x (|phi| + 0.01 w).
+Volume makeVolume(const Contact& contact, const FrictionSettings& settings);
+
+// The shapes of one side of a contact: [first, last) indices into the body's shapes (the
+// contact's shape, or all of them when its index is -1). Throws asperity::Error for a body or
+// shape index out of range.
+struct ShapeRange {
+  const Body* body = nullptr;
+  int first = 0;
+  int last = 0;
+};
+ShapeRange shapesOf(std::span<const Body> bodies, const Contact& contact, Side side);
+
+// mu0 and the gains k_A, k_B of Eq. 7 (the gain of the contact's shape, or of the body's first
+// shape when the index is -1).
+PatchGains gainsOf(const ShapeRange& a, const ShapeRange& b, double mu0);
+
+// Eq. 8 then Eq. 7: means of the per-surface sums over |P| = count pixels into contact.mu;
+// count == 0 gives the fallback mu = mu0 (contact.fallback = true).
+void finishContact(Contact& contact, std::span<const double> sums_a, std::span<const double> sums_b,
+                   int count, const PatchGains& gains);
+
+// The world pose of shape `index` of `body`.
+Transform shapePose(const Body& body, int index);
+
+}  // namespace asperity::patch

@@ -1,0 +1,233 @@
+// From shapes to rasterised fragments (patch_geometry.hpp).
+#include "sampler/patch_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "asperity/error.hpp"
+#include "geometry/shape_mesh_internal.hpp"
+
+namespace asperity::patch {
+
+namespace {
+
+// Where the shape frame sits in the contact frame: p_c = m p_local + o.
+struct Placement {
+  Mat3 m;
+  Vec3 o;
+};
+
+Placement place(const Volume& volume, const Transform& pose) {
+  const Mat3 at = volume.axes.transpose();
+  return {at * pose.rotation.toRotationMatrix(), at * (pose.position - volume.origin)};
+}
+
+Material materialOf(const Shape& shape) {
+  return {shape.surface.normal_map.get(), shape.surface.mask.get()};
+}
+
+// A fragment of `side` is kept only if the geometric normal faces the other body (SPEC 3).
+bool facesOther(Side side, double normal_z) {
+  return side == Side::B ? normal_z > 0.0 : normal_z < 0.0;
+}
+
+void setFrame(PolygonVertex& v, const Vec3& t, const Vec3& b, const Vec3& n) {
+  for (int k = 0; k < 3; ++k) {
+    v.tbn[static_cast<size_t>(k)] = t[k];
+    v.tbn[static_cast<size_t>(3 + k)] = b[k];
+    v.tbn[static_cast<size_t>(6 + k)] = n[k];
+  }
+}
+
+// Keeps uv small (the texture repeats): subtract the first vertex's whole repeats.
+void shiftUv(PolygonVertex* v, int count) {
+  const double fu = std::floor(v[0].u), fv = std::floor(v[0].v);
+  for (int k = 0; k < count; ++k) v[k].u -= fu, v[k].v -= fv;
+}
+
+// Counter-clockwise seen from +n: B's front faces already are, A's are reversed.
+void pushPolygon(const Volume& volume, PolygonVertex* v, int count, bool smooth,
+                 const Material& material, SurfaceRaster& raster) {
+  if (raster.side == Side::A) std::reverse(v, v + count);
+  shiftUv(v, count);
+  Planar prim;
+  if (!makePlanar(volume, v, count, smooth, material, prim)) return;
+  raster.planars.push_back(prim);
+  const auto id = static_cast<int32_t>(raster.planars.size() - 1);
+  rasterisePlanar(volume, raster.planars.back(), id, raster);
+}
+
+void rasteriseBox(const Volume& volume, const Shape& shape, const Placement& pl,
+                  SurfaceRaster& raster) {
+  const double scale = detail::textureScale(shape);
+  const Vec3 h = shape.half_extents;
+  // Quick reject: the bounding sphere misses the volume.
+  const double radius = h.norm();
+  if (std::abs(pl.o.z()) > radius + volume.half_depth ||
+      std::abs(pl.o.x()) > radius + 0.5 * volume.width ||
+      std::abs(pl.o.y()) > radius + 0.5 * volume.width) {
+    return;
+  }
+  // Each face that faces the other body is a quad (corners counter-clockwise seen from outside).
+  for (int face = 0; face < 6; ++face) {
+    const SurfaceFrame f = boxFaceFrame(face);
+    const Vec3 nc = pl.m * f.n;
+    if (!facesOther(raster.side, nc.z())) continue;
+    const SurfaceFrame tex = rotateTexture(f, shape.surface.texture_rotation);
+    const Vec3 tc = pl.m * tex.t, bc = pl.m * tex.b;
+    const Vec3 centre = f.n.cwiseProduct(h), et = f.t.cwiseProduct(h), eb = f.b.cwiseProduct(h);
+    static constexpr double su[4] = {-1, 1, 1, -1}, sv[4] = {-1, -1, 1, 1};
+    PolygonVertex v[4];
+    for (int k = 0; k < 4; ++k) {
+      const Vec3 p = centre + su[k] * et + sv[k] * eb;
+      v[k].p = pl.m * p + pl.o;
+      v[k].u = scale * p.dot(tex.t);
+      v[k].v = scale * p.dot(tex.b);
+      setFrame(v[k], tc, bc, nc);
+    }
+    pushPolygon(volume, v, 4, false, materialOf(shape), raster);
+  }
+}
+
+void rasterisePlane(const Volume& volume, const Shape& shape, const Placement& pl,
+                    SurfaceRaster& raster) {
+  // The plane {n.x = offset} in the contact frame; skip it edge-on or facing away.
+  const double len = shape.plane_normal.norm();
+  if (!(len > 0.0)) throw Error("plane shape: plane_normal is zero");
+  const Vec3 nl = shape.plane_normal / len;
+  const Vec3 nc = pl.m * nl;
+  if (!facesOther(raster.side, nc.z()) || std::abs(nc.z()) < 1e-9) return;
+  const Vec3 p0 = pl.m * (shape.plane_offset / len * nl) + pl.o;
+  Planar prim;
+  prim.edge_count = 0;
+  // Depth over the contact plane: z = p0.z - (nc.x (x - p0.x) + nc.y (y - p0.y)) / nc.z.
+  prim.z = {p0.z() + (nc.x() * p0.x() + nc.y() * p0.y()) / nc.z(), -nc.x() / nc.z(),
+            -nc.y() / nc.z()};
+  // uv = scale (T, B) . p_local: affine in (x, y) through z(x, y); whole repeats removed.
+  const SurfaceFrame tex = rotateTexture(detail::planeFrame(nl), shape.surface.texture_rotation);
+  const double scale = detail::textureScale(shape);
+  auto uvAffine = [&](const Vec3& axis) {
+    const Vec3 g = scale * (pl.m * axis);
+    Affine a{g.z() * prim.z.c - g.dot(pl.o), g.x() + g.z() * prim.z.dx, g.y() + g.z() * prim.z.dy};
+    a.c -= std::floor(a.c);
+    return a;
+  };
+  prim.u = uvAffine(tex.t);
+  prim.v = uvAffine(tex.b);
+  const Vec3 tc = pl.m * tex.t, bc = pl.m * tex.b;
+  for (int k = 0; k < 3; ++k) {
+    prim.tbn[static_cast<size_t>(k)].c = tc[k];
+    prim.tbn[static_cast<size_t>(3 + k)].c = bc[k];
+    prim.tbn[static_cast<size_t>(6 + k)].c = nc[k];
+  }
+  prim.frame.col(0) = tc.cast<float>();
+  prim.frame.col(1) = bc.cast<float>();
+  prim.frame.col(2) = nc.cast<float>();
+  prim.i0 = prim.j0 = 0;
+  prim.i1 = prim.j1 = volume.resolution - 1;
+  prim.material = materialOf(shape);
+  raster.planars.push_back(prim);
+  rasterisePlanar(volume, raster.planars.back(), static_cast<int32_t>(raster.planars.size() - 1),
+                  raster);
+}
+
+void rasteriseCurvedShape(const Volume& volume, const Shape& shape, const Placement& pl,
+                          SurfaceRaster& raster) {
+  // Bounding sphere of the shape about its origin; reject when it misses the volume.
+  const double reach = shape.type == ShapeType::Sphere
+                           ? shape.radius
+                           : std::hypot(shape.radius, shape.half_height) + shape.radius;
+  const double half = 0.5 * volume.width;
+  if (std::abs(pl.o.z()) > reach + volume.half_depth || std::abs(pl.o.x()) > reach + half ||
+      std::abs(pl.o.y()) > reach + half) {
+    return;
+  }
+  Curved prim;
+  prim.shape = &shape;
+  prim.to_local = pl.m.transpose();
+  prim.origin_local = -(prim.to_local * pl.o);
+  pixelRange(volume, pl.o.x() - reach, pl.o.x() + reach, prim.i0, prim.i1);
+  pixelRange(volume, pl.o.y() - reach, pl.o.y() + reach, prim.j0, prim.j1);
+  prim.material = materialOf(shape);
+  raster.curveds.push_back(prim);
+  rasteriseCurved(volume, raster.curveds.back(), static_cast<int32_t>(raster.curveds.size() - 1),
+                  raster);
+}
+
+void rasteriseMesh(const Volume& volume, const Shape& shape, const Placement& pl, MeshCache& meshes,
+                   GeometryScratch& scratch, SurfaceRaster& raster) {
+  const CachedMesh& cached = meshes.get(shape);
+  const ShapeMesh& mesh = cached.mesh;
+  // The volume's box in the shape frame, then the triangles whose boxes overlap it.
+  const Mat3 to_local = pl.m.transpose();
+  Aabb box;
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 corner(c & 1 ? 0.5 * volume.width : -0.5 * volume.width,
+                      c & 2 ? 0.5 * volume.width : -0.5 * volume.width,
+                      c & 4 ? volume.half_depth : -volume.half_depth);
+    box.grow(Vec3f((to_local * (corner - pl.o)).cast<float>()));
+  }
+  const float pad = 1e-6f * static_cast<float>(volume.width);
+  box.lo.array() -= pad;
+  box.hi.array() += pad;
+  scratch.triangles.clear();
+  cached.bvh.query(box, scratch.triangles);
+  // Each triangle facing the other body, in the contact frame with its attributes.
+  const Material material = materialOf(shape);
+  for (int index : scratch.triangles) {
+    const auto& tri = mesh.triangles[static_cast<size_t>(index)];
+    PolygonVertex v[3];
+    for (int k = 0; k < 3; ++k) {
+      const auto vi = static_cast<size_t>(tri[static_cast<size_t>(k)]);
+      v[k].p = pl.m * mesh.positions[vi].cast<double>() + pl.o;
+      v[k].u = mesh.uvs[vi].x();
+      v[k].v = mesh.uvs[vi].y();
+      setFrame(v[k], pl.m * mesh.tangents[vi].cast<double>(),
+               pl.m * mesh.bitangents[vi].cast<double>(), pl.m * mesh.normals[vi].cast<double>());
+    }
+    const Vec3 e1 = v[1].p - v[0].p, e2 = v[2].p - v[0].p;
+    if (!facesOther(raster.side, e1.x() * e2.y() - e1.y() * e2.x())) continue;
+    pushPolygon(volume, v, 3, cached.smooth, material, raster);
+  }
+}
+
+}  // namespace
+
+const CachedMesh& MeshCache::get(const Shape& shape) {
+  if (!shape.mesh) throw Error("patch sampler: mesh shape without mesh data");
+  const Key key{shape.mesh.get(), static_cast<int>(shape.type), shape.surface.texture_size,
+                shape.surface.texture_rotation};
+  auto it = entries_.find(key);
+  if (it != entries_.end()) return *it->second;
+  // First use: triangulate with uv and frames, then the tree.
+  auto entry = std::make_unique<CachedMesh>();
+  entry->mesh = buildShapeMesh(shape);
+  entry->bvh = TriangleBvh(entry->mesh.positions, entry->mesh.triangles);
+  entry->smooth = shape.type == ShapeType::TriangleMesh && !shape.mesh->uvs.empty();
+  entry->keep_alive = shape.mesh;
+  return *entries_.emplace(key, std::move(entry)).first->second;
+}
+
+void rasteriseShape(const Volume& volume, const Shape& shape, const Transform& pose,
+                    MeshCache& meshes, GeometryScratch& scratch, SurfaceRaster& raster) {
+  const Placement pl = place(volume, pose);
+  switch (shape.type) {
+    case ShapeType::Box:
+      rasteriseBox(volume, shape, pl, raster);
+      break;
+    case ShapeType::Plane:
+      rasterisePlane(volume, shape, pl, raster);
+      break;
+    case ShapeType::Sphere:
+    case ShapeType::Capsule:
+    case ShapeType::Cylinder:
+      rasteriseCurvedShape(volume, shape, pl, raster);
+      break;
+    case ShapeType::ConvexHull:
+    case ShapeType::TriangleMesh:
+      rasteriseMesh(volume, shape, pl, meshes, scratch, raster);
+      break;
+  }
+}
+
+}  // namespace asperity::patch

@@ -1,0 +1,46 @@
+// From a body's shapes to the rasteriser's primitives (patch_raster.hpp): box faces as quads
+// clipped analytically, planes as one edgeless primitive, spheres, capsules and cylinders by
+// ray casting (their exact surface, as the collision stage sees it), convex hulls and triangle
+// meshes through a BVH query of their cached shape mesh.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <tuple>
+#include <vector>
+
+#include "asperity/geometry/bvh.hpp"
+#include "asperity/geometry/shape_mesh.hpp"
+#include "sampler/patch_raster.hpp"
+
+namespace asperity::patch {
+
+// A mesh shape's triangles with uv and frames, and its BVH; built once per (mesh data, mapping).
+struct CachedMesh {
+  ShapeMesh mesh;
+  TriangleBvh bvh;
+  bool smooth = false;  // per-vertex frames interpolated (meshes with their own UVs)
+  std::shared_ptr<const TriangleMeshData> keep_alive;
+};
+
+class MeshCache {
+ public:
+  const CachedMesh& get(const Shape& shape);
+  size_t size() const { return entries_.size(); }
+
+ private:
+  using Key = std::tuple<const TriangleMeshData*, int, double, double>;
+  std::map<Key, std::unique_ptr<CachedMesh>> entries_;
+};
+
+// Scratch reused between contacts (no allocation per contact once warm).
+struct GeometryScratch {
+  std::vector<int> triangles;
+};
+
+// Rasterises the parts of `shape` (placed at `pose` in the world) that lie in the volume into
+// `raster`, keeping only fragments whose geometric normal faces the other body.
+void rasteriseShape(const Volume& volume, const Shape& shape, const Transform& pose,
+                    MeshCache& meshes, GeometryScratch& scratch, SurfaceRaster& raster);
+
+}  // namespace asperity::patch

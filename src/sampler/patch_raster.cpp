@@ -1,0 +1,216 @@
+// The CPU patch rasteriser: planar primitives with edge functions, curved ones by ray casting.
+#include "sampler/patch_raster.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace asperity::patch {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Affine fit of an attribute through three points (x, y) -> value.
+Affine fitAffine(const Vec3& p0, double a0, double a1, double a2, const Eigen::Matrix2d& inv) {
+  const double d1 = a1 - a0, d2 = a2 - a0;
+  Affine f;
+  f.dx = inv(0, 0) * d1 + inv(1, 0) * d2;
+  f.dy = inv(0, 1) * d1 + inv(1, 1) * d2;
+  f.c = a0 - f.dx * p0.x() - f.dy * p0.y();
+  return f;
+}
+
+// The ray's parameter interval inside a sphere of radius r centred at c (false: misses).
+bool sphereInterval(const Vec3& o, const Vec3& a, const Vec3& c, double r, double& s0, double& s1) {
+  const Vec3 oc = o - c;
+  const double bq = oc.dot(a);
+  const double disc = bq * bq - (oc.squaredNorm() - r * r);
+  if (disc < 0.0) return false;
+  const double root = std::sqrt(disc);
+  s0 = -bq - root;
+  s1 = -bq + root;
+  return true;
+}
+
+// Inside the infinite cylinder x^2 + y^2 <= r^2 clipped to |z| <= h (false: misses).
+bool finiteCylinderInterval(const Vec3& o, const Vec3& a, double r, double h, double& s0,
+                            double& s1) {
+  double lo = -kInf, hi = kInf;
+  // Radial part.
+  const double aa = a.x() * a.x() + a.y() * a.y();
+  const double bb = o.x() * a.x() + o.y() * a.y();
+  const double cc = o.x() * o.x() + o.y() * o.y() - r * r;
+  if (aa < 1e-18) {
+    if (cc > 0.0) return false;
+  } else {
+    const double disc = bb * bb - aa * cc;
+    if (disc < 0.0) return false;
+    const double root = std::sqrt(disc);
+    lo = (-bb - root) / aa;
+    hi = (-bb + root) / aa;
+  }
+  // Axial slab.
+  if (std::abs(a.z()) < 1e-18) {
+    if (std::abs(o.z()) > h) return false;
+  } else {
+    const double t0 = (-h - o.z()) / a.z(), t1 = (h - o.z()) / a.z();
+    lo = std::max(lo, std::min(t0, t1));
+    hi = std::min(hi, std::max(t0, t1));
+  }
+  if (lo > hi) return false;
+  s0 = lo;
+  s1 = hi;
+  return true;
+}
+
+}  // namespace
+
+void pixelRange(const Volume& volume, double a, double b, int& lo, int& hi) {
+  // Conservative by one pixel; the coverage tests decide exactly.
+  const double half = 0.5 * volume.width;
+  const double fa = std::floor((a + half) / volume.pixel - 0.5);
+  const double fb = std::ceil((b + half) / volume.pixel - 0.5);
+  lo = static_cast<int>(std::clamp(fa, 0.0, static_cast<double>(volume.resolution)));
+  hi = static_cast<int>(std::clamp(fb, -1.0, static_cast<double>(volume.resolution - 1)));
+}
+
+void SurfaceRaster::reset(Side s, int pixels) {
+  side = s;
+  key.assign(static_cast<size_t>(pixels), kEmpty);
+  primitive.resize(static_cast<size_t>(pixels));
+  planars.clear();
+  curveds.clear();
+}
+
+bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool smooth,
+                const Material& material, Planar& out) {
+  // Reject: entirely beyond the depth clip or the footprint.
+  double zmin = kInf, zmax = -kInf, xmin = kInf, xmax = -kInf, ymin = kInf, ymax = -kInf;
+  for (int k = 0; k < count; ++k) {
+    const Vec3& p = vtx[k].p;
+    zmin = std::min(zmin, p.z()), zmax = std::max(zmax, p.z());
+    xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
+    ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
+  }
+  if (zmin > volume.half_depth || zmax < -volume.half_depth) return false;
+  pixelRange(volume, xmin, xmax, out.i0, out.i1);
+  pixelRange(volume, ymin, ymax, out.j0, out.j1);
+  if (out.i0 > out.i1 || out.j0 > out.j1) return false;
+  // Edge-on (zero projected area) primitives cover no pixel centre.
+  const Vec3 &p0 = vtx[0].p, &p1 = vtx[1].p, &p2 = vtx[2].p;
+  Eigen::Matrix2d m;
+  m << p1.x() - p0.x(), p2.x() - p0.x(), p1.y() - p0.y(), p2.y() - p0.y();
+  const double det = m.determinant();
+  if (!(det > 1e-30 * volume.width * volume.width)) return false;
+  const Eigen::Matrix2d inv = m.inverse();
+  // Edges with the top-left rule (counter-clockwise, y up: left edges go down).
+  out.edge_count = count;
+  for (int k = 0; k < count; ++k) {
+    const Vec3& a = vtx[k].p;
+    const Vec3& b = vtx[(k + 1) % count].p;
+    Edge& e = out.edges[static_cast<size_t>(k)];
+    e.a = -(b.y() - a.y());
+    e.b = b.x() - a.x();
+    e.c = -(e.a * a.x() + e.b * a.y());
+    e.inclusive = b.y() < a.y() || (b.y() == a.y() && b.x() < a.x());
+  }
+  // Affine depth, uv and frame through the first three vertices (the polygon is planar).
+  out.z = fitAffine(p0, p0.z(), p1.z(), p2.z(), inv);
+  out.u = fitAffine(p0, vtx[0].u, vtx[1].u, vtx[2].u, inv);
+  out.v = fitAffine(p0, vtx[0].v, vtx[1].v, vtx[2].v, inv);
+  out.smooth = smooth;
+  for (size_t c = 0; c < 9; ++c) {
+    out.tbn[c] = smooth ? fitAffine(p0, vtx[0].tbn[c], vtx[1].tbn[c], vtx[2].tbn[c], inv)
+                        : Affine{vtx[0].tbn[c], 0.0, 0.0};
+  }
+  for (int col = 0; col < 3; ++col) {
+    for (int row = 0; row < 3; ++row) {
+      out.frame(row, col) = static_cast<float>(out.tbn[static_cast<size_t>(3 * col + row)].c);
+    }
+  }
+  out.material = material;
+  return true;
+}
+
+void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, SurfaceRaster& raster) {
+  const int r = volume.resolution;
+  const double h = volume.half_depth;
+  const float sign = raster.side == Side::B ? 1.0f : -1.0f;
+  for (int j = prim.j0; j <= prim.j1; ++j) {
+    const double y = volume.centreX(j);
+    for (int i = prim.i0; i <= prim.i1; ++i) {
+      const double x = volume.centreX(i);
+      // Coverage: inside every edge.
+      bool inside = true;
+      for (int k = 0; k < prim.edge_count; ++k) inside = inside && prim.edges[k].inside(x, y);
+      if (!inside) continue;
+      // Depth clip, then keep the fragment nearest the other body.
+      const double z = prim.z.at(x, y);
+      if (!(std::abs(z) <= h)) continue;
+      const size_t idx = static_cast<size_t>(j * r + i);
+      const float key = sign * static_cast<float>(z);
+      if (key > raster.key[idx]) {
+        raster.key[idx] = key;
+        raster.primitive[idx] = id;
+      }
+    }
+  }
+}
+
+bool castCurved(const Curved& prim, Side side, double x, double y, double& z) {
+  // The ray in the shape frame: o + s a, with s the contact-frame z.
+  const Vec3 o = prim.origin_local + prim.to_local.col(0) * x + prim.to_local.col(1) * y;
+  const Vec3 a = prim.to_local.col(2);
+  const Shape& s = *prim.shape;
+  double lo = kInf, hi = -kInf, s0 = 0.0, s1 = 0.0;
+  // Union of convex parts is convex: its interval spans the parts' intervals.
+  auto add = [&](bool hit) {
+    if (!hit) return;
+    lo = std::min(lo, s0);
+    hi = std::max(hi, s1);
+  };
+  switch (s.type) {
+    case ShapeType::Sphere:
+      add(sphereInterval(o, a, Vec3::Zero(), s.radius, s0, s1));
+      break;
+    case ShapeType::Cylinder:
+      add(finiteCylinderInterval(o, a, s.radius, s.half_height, s0, s1));
+      break;
+    case ShapeType::Capsule:
+      add(finiteCylinderInterval(o, a, s.radius, s.half_height, s0, s1));
+      add(sphereInterval(o, a, Vec3(0, 0, s.half_height), s.radius, s0, s1));
+      add(sphereInterval(o, a, Vec3(0, 0, -s.half_height), s.radius, s0, s1));
+      break;
+    default:
+      return false;
+  }
+  if (lo > hi) return false;
+  // B faces +n: its surface toward A is where the ray leaves it; A is entered there.
+  z = side == Side::B ? hi : lo;
+  return true;
+}
+
+void rasteriseCurved(const Volume& volume, const Curved& prim, int32_t id, SurfaceRaster& raster) {
+  const int r = volume.resolution;
+  const float sign = raster.side == Side::B ? 1.0f : -1.0f;
+  for (int j = prim.j0; j <= prim.j1; ++j) {
+    const double y = volume.centreX(j);
+    for (int i = prim.i0; i <= prim.i1; ++i) {
+      const double x = volume.centreX(i);
+      double z = 0.0;
+      // Depth clip, then keep the fragment nearest the other body.
+      if (!castCurved(prim, raster.side, x, y, z) || !(std::abs(z) <= volume.half_depth)) {
+        continue;
+      }
+      const size_t idx = static_cast<size_t>(j * r + i);
+      const float key = sign * static_cast<float>(z);
+      if (key > raster.key[idx]) {
+        raster.key[idx] = key;
+        raster.primitive[idx] = -1 - id;
+      }
+    }
+  }
+}
+
+}  // namespace asperity::patch

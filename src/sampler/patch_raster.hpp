@@ -1,0 +1,120 @@
+// The CPU patch rasteriser (SPEC 3): one surface's geometry inside a contact's viewing volume,
+// projected orthographically along n onto an R x R grid of pixel centres.
+//
+// Everything here is in the contact frame: x along t, y along b, z along n, origin at the
+// contact point. Pixel (i, j) has its centre at x = -w/2 + (i + 1/2) w/R, y = -w/2 + (j + 1/2)
+// w/R (row 0 at -b, like an OpenGL viewport); index j * R + i. A fragment is kept when
+// |z| <= half_depth (the depth clip of the volume) and, among the fragments of one surface at a
+// pixel, it is the one nearest the other body (largest z for B, smallest for A: what a depth
+// test sees looking from the other body).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "asperity/friction/fragment_model.hpp"
+#include "asperity/geometry/shape.hpp"
+#include "asperity/math/types.hpp"
+
+namespace asperity::patch {
+
+// The viewing volume of one contact (SPEC 3): centre, axes and size.
+struct Volume {
+  Vec3 origin = Vec3::Zero();    // contact point (world)
+  Mat3 axes = Mat3::Identity();  // columns t, b, n (world)
+  double width = 0.02;           // w (m)
+  double half_depth = 1e-4;      // (|phi| + 0.01 w) / 2 (m)
+  int resolution = 16;           // R
+  double pixel = 0.02 / 16;      // w / R
+
+  double centreX(int i) const { return -0.5 * width + (i + 0.5) * pixel; }
+};
+
+// a + dx x + dy y: an attribute that is affine over a planar primitive.
+struct Affine {
+  double c = 0.0, dx = 0.0, dy = 0.0;
+  double at(double x, double y) const { return c + dx * x + dy * y; }
+};
+
+// One edge of a counter-clockwise convex polygon: inside when e > 0, or e == 0 on a top or left
+// edge (the top-left rule, so a pixel centre on a shared edge belongs to one triangle).
+struct Edge {
+  double a = 0.0, b = 0.0, c = 0.0;
+  bool inclusive = false;
+  bool inside(double x, double y) const {
+    const double e = a * x + b * y + c;
+    return e > 0.0 || (e == 0.0 && inclusive);
+  }
+};
+
+// What the shading needs to evaluate a fragment's meso normal, per primitive.
+struct Material {
+  const NormalMap* map = nullptr;  // null = flat
+  const GainMask* mask = nullptr;  // null = 1
+};
+
+// A planar primitive: a triangle, a box face, or a whole plane (no edges), with affine depth,
+// uv and (for smooth-shaded mesh triangles) tangent frame in the contact frame.
+struct Planar {
+  int edge_count = 0;
+  std::array<Edge, 4> edges{};
+  Affine z;
+  Affine u, v;
+  bool smooth = false;          // false: `frame` holds the constant frame
+  std::array<Affine, 9> tbn{};  // T, B, N components (contact frame)
+  Eigen::Matrix3f frame =
+      Eigen::Matrix3f::Identity();       // columns T, B, N at tbn[].c (flat primitives)
+  int i0 = 0, i1 = -1, j0 = 0, j1 = -1;  // pixel bounds (inclusive)
+  Material material;
+};
+
+// A curved primitive (sphere, capsule, cylinder): every pixel casts a ray along n.
+struct Curved {
+  const Shape* shape = nullptr;
+  Mat3 to_local = Mat3::Identity();  // contact frame -> shape frame (rotation)
+  Vec3 origin_local = Vec3::Zero();  // contact point in the shape frame
+  int i0 = 0, i1 = -1, j0 = 0, j1 = -1;
+  Material material;
+};
+
+// One surface's pixels: for each, the kept fragment's primitive and its depth key.
+struct SurfaceRaster {
+  Side side = Side::B;
+  std::vector<float> key;  // z for B, -z for A; -inf where nothing is kept
+  std::vector<int32_t>
+      primitive;  // >= 0 planar index, < 0: curved index -1 - p; unused if key=-inf
+  std::vector<Planar> planars;
+  std::vector<Curved> curveds;
+
+  void reset(Side s, int pixels);
+  bool covered(int pixel) const { return key[static_cast<size_t>(pixel)] > kEmpty; }
+  static constexpr float kEmpty = -3.0e38f;
+};
+
+// Builds a planar primitive from a counter-clockwise (seen from +n) convex polygon of up to 4
+// vertices (contact frame) with per-vertex attributes u, v and frame (9 floats). Returns false
+// when it is edge-on or outside the volume's footprint.
+struct PolygonVertex {
+  Vec3 p = Vec3::Zero();
+  double u = 0.0, v = 0.0;
+  std::array<double, 9> tbn{};
+};
+bool makePlanar(const Volume& volume, const PolygonVertex* vertices, int count, bool smooth,
+                const Material& material, Planar& out);
+
+// The pixel index range [lo, hi] whose centres may lie in [a, b] along one axis (clamped to
+// the grid; empty when lo > hi).
+void pixelRange(const Volume& volume, double a, double b, int& lo, int& hi);
+
+// Rasterises into `raster` (depth clip + nearest-to-the-other-body test).
+void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, SurfaceRaster& raster);
+void rasteriseCurved(const Volume& volume, const Curved& prim, int32_t id, SurfaceRaster& raster);
+
+// The ray along n through (x, y) of the contact frame against a curved primitive: the surface
+// point that faces the other body (exit for B, entry for A), as z. False when it misses.
+bool castCurved(const Curved& prim, Side side, double x, double y, double& z);
+
+}  // namespace asperity::patch
