@@ -53,19 +53,29 @@ bool Range::contains(double x) const {
   return above && below;
 }
 
+// Caps of 1e6 and more on a range from 0 are sanity limits: the words leave them out.
+bool Range::softMax() const {
+  return min == 0.0 && max >= 1e6 && max < 1e300;
+}
+
 std::string Range::describe() const {
   const bool no_min = min <= -1e300;
   const bool no_max = max >= 1e300;
   // The common shapes read as words.
   if (no_min && no_max) return "a finite number";
-  if (min == 0.0 && no_max) return min_open ? "a positive number" : "a non-negative number";
+  if (min == 0.0 && (no_max || softMax()))
+    return min_open ? "a positive number" : "a non-negative number";
   return std::string("a number in ") + (min_open ? "(" : "[") + bound(min) + ", " + bound(max) +
          (max_open ? ")" : "]");
 }
 
 std::string formatNumber(double x) {
+  // Whole numbers below 1e16 print in full ("1000000", not "1e+06"); the rest shortest.
   char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), x);
+  const bool whole = std::isfinite(x) && x == std::trunc(x) && std::abs(x) < 1e16;
+  const auto result =
+      whole ? std::to_chars(buffer, buffer + sizeof(buffer), x, std::chars_format::fixed)
+            : std::to_chars(buffer, buffer + sizeof(buffer), x);
   return std::string(buffer, result.ptr);
 }
 
@@ -79,6 +89,17 @@ nlohmann::json parseJsonText(const std::string& text, const std::string& file) {
     const size_t colon = column == std::string::npos ? what.find(": ") : what.find(": ", column);
     if (colon != std::string::npos) what = what.substr(colon + 2);
     const auto [line, col] = lineColumn(text, e.byte);
+    throw Error(file + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " + what);
+  } catch (const nlohmann::json::out_of_range& e) {
+    // "number overflow parsing '1e999'": locate the literal for its line and column.
+    std::string what = e.what();
+    what = what.substr(what.find("] ") + 2);
+    const size_t quote = what.find('\'');
+    const size_t at = quote == std::string::npos
+                          ? std::string::npos
+                          : text.find(what.substr(quote + 1, what.size() - quote - 2));
+    if (at == std::string::npos) throw Error(file + ": " + what);
+    const auto [line, col] = lineColumn(text, at + 1);
     throw Error(file + ":" + std::to_string(line) + ":" + std::to_string(col) + ": " + what);
   }
 }
@@ -123,8 +144,12 @@ void JsonReader::requireObject() const {
 }
 
 double JsonReader::asNumber(Range range) const {
-  if (!value_.is_number() || !range.contains(value_.get<double>()))
+  if (!value_.is_number() || !range.contains(value_.get<double>())) {
+    // Over a sanity limit that the range's words leave out: say so.
+    if (value_.is_number() && range.softMax() && value_.get<double>() > range.max)
+      fail("must be at most " + bound(range.max) + ", got " + describeValue(value_));
     fail("must be " + range.describe() + ", got " + describeValue(value_));
+  }
   return value_.get<double>();
 }
 

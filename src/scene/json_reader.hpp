@@ -32,6 +32,8 @@ struct Range {
   static Range leftOpen(double lo, double hi) { return {lo, hi, true, false}; }
 
   bool contains(double x) const;
+  // A cap of 1e6 or more on a range from 0 (a sanity limit, named only when exceeded).
+  bool softMax() const;
   // "a positive number", "a number in (0, 1]", ...
   std::string describe() const;
 };

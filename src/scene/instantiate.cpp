@@ -1,0 +1,180 @@
+// From a scene description to a World: resolve every surface's normal map and mask, every OBJ
+// mesh, then create bodies, joints, springs and loads, and install the friction provider.
+#include <map>
+
+#include "asperity/error.hpp"
+#include "asperity/scene/friction_registry.hpp"
+#include "asperity/scene/scene.hpp"
+#include "asperity/texture/generators.hpp"
+#include "asperity/texture/png_io.hpp"
+#include "scene/scene_common.hpp"
+#include "scene/scene_resources.hpp"
+#include "texture/png_codec.hpp"
+
+namespace asperity {
+
+namespace scene {
+
+namespace {
+
+// A generator spec as one string: equal strings give equal maps.
+std::string generatorKey(const GeneratorSpec& spec) {
+  std::string key =
+      "generator:" + spec.name + ":" + std::to_string(spec.size) + ":" + std::to_string(spec.seed);
+  for (const auto& [name, value] : spec.params) key += ":" + name + "=" + value;
+  return key;
+}
+
+// Generator parameters that name files are relative to the scene's folder.
+GeneratorSpec resolveGeneratorPaths(GeneratorSpec spec, const std::string& base_dir) {
+  for (const GeneratorInfo& g : generatorCatalog())
+    if (g.name == spec.name)
+      for (const GeneratorParam& p : g.params)
+        if (p.kind == "path" && spec.params.count(p.name))
+          spec.params[p.name] = resolvePath(base_dir, spec.params[p.name]);
+  return spec;
+}
+
+// A grey PNG as a gain mask (rows bottom-up like NormalMap; values in [0, 1]).
+GainMask loadGainMask(const std::string& path) {
+  const std::vector<uint8_t> bytes = png::readFile(path);
+  png::inspect(bytes, path, kMaxTextureSize);
+  const png::Image image = png::decode(bytes, path, kMaxTextureSize, 1);
+  GainMask mask;
+  mask.width = image.header.width;
+  mask.height = image.header.height;
+  mask.values.resize(image.samples.size());
+  const size_t w = static_cast<size_t>(mask.width);
+  const size_t h = static_cast<size_t>(mask.height);
+  for (size_t r = 0; r < h; ++r)
+    for (size_t i = 0; i < w; ++i) mask.values[(h - 1 - r) * w + i] = image.samples[r * w + i];
+  return mask;
+}
+
+}  // namespace
+
+std::shared_ptr<const NormalMap> ResourceCache::normalMap(const Surface& surface) {
+  // Files are keyed by their resolved path and green convention, generators by their spec.
+  std::string key;
+  if (!surface.normal_map_file.empty())
+    key = "file:" + resolvePath(base_dir_, surface.normal_map_file) +
+          (surface.green == GreenConvention::DirectX ? ":directx" : ":opengl");
+  else if (!surface.generator.name.empty())
+    key = generatorKey(surface.generator);
+  else
+    return nullptr;
+  auto& slot = normal_maps_[key];
+  if (slot) return slot;
+  if (!surface.normal_map_file.empty())
+    slot = std::make_shared<const NormalMap>(
+        loadNormalMapPng(resolvePath(base_dir_, surface.normal_map_file), surface.green));
+  else
+    slot = std::make_shared<const NormalMap>(
+        generateNormalMap(resolveGeneratorPaths(surface.generator, base_dir_)));
+  return slot;
+}
+
+std::shared_ptr<const GainMask> ResourceCache::mask(const std::string& file) {
+  if (file.empty()) return nullptr;
+  const std::string path = resolvePath(base_dir_, file);
+  auto& slot = masks_[path];
+  if (!slot) slot = std::make_shared<const GainMask>(loadGainMask(path));
+  return slot;
+}
+
+std::shared_ptr<const TriangleMeshData> ResourceCache::mesh(const SceneMesh& source) {
+  const std::string path = resolvePath(base_dir_, source.file);
+  auto& slot =
+      meshes_[path + ":" + formatNumber(source.scale) + ":" + std::to_string(source.simplify)];
+  if (!slot) slot = loadSceneMesh(path, source);
+  return slot;
+}
+
+}  // namespace scene
+
+namespace {
+
+// Runs `f`, prefixing any error with the scene file and the JSON pointer of the culprit.
+template <typename F>
+auto withContext(const SceneDesc& scene, const std::string& pointer, F&& f) {
+  try {
+    return f();
+  } catch (const Error& e) {
+    const std::string file = scene.source_file.empty() ? "scene" : scene.source_file;
+    throw Error(file + ": " + pointer + ": " + e.what());
+  }
+}
+
+// A body with its surfaces, masks and meshes resolved.
+BodyDesc resolveBody(const SceneDesc& scene, size_t index, scene::ResourceCache& cache) {
+  BodyDesc desc = scene.bodies[index];
+  const std::string body_ptr = "/bodies/" + std::to_string(index);
+  for (size_t i = 0; i < desc.shapes.size(); ++i) {
+    Surface& s = desc.shapes[i].surface;
+    const std::string ptr = body_ptr + "/shapes/" + std::to_string(i) + "/surface";
+    if (!s.normal_map)
+      s.normal_map = withContext(scene, ptr + "/normal_map", [&] { return cache.normalMap(s); });
+    if (!s.mask)
+      s.mask = withContext(scene, ptr + "/mask", [&] { return cache.mask(s.mask_file); });
+  }
+  for (const SceneMesh& m : scene.meshes) {
+    if (m.body != index) continue;
+    if (m.shape >= desc.shapes.size())
+      throw Error("scene mesh refers to shape " + std::to_string(m.shape) + " of body \"" +
+                  desc.name + "\", which has " + std::to_string(desc.shapes.size()));
+    const bool hull = desc.shapes[m.shape].type == ShapeType::ConvexHull;
+    const std::string ptr =
+        body_ptr + "/shapes/" + std::to_string(m.shape) + (hull ? "/mesh" : "/file");
+    desc.shapes[m.shape].mesh = withContext(scene, ptr, [&] { return cache.mesh(m); });
+  }
+  return desc;
+}
+
+// The id of a named body; the scene reader has checked the name, code-built scenes may not.
+BodyId bodyId(const World& world, const std::string& name, const std::string& what) {
+  const BodyId id = world.findBody(name);
+  if (id == kNoBody) throw Error(what + ": unknown body \"" + name + "\"");
+  return id;
+}
+
+}  // namespace
+
+std::unique_ptr<World> instantiate(const SceneDesc& scene) {
+  auto world = std::make_unique<World>(scene.settings);
+  world->setFrictionProvider(
+      withContext(scene, "/settings/sampler", [&] { return makeFrictionProvider(scene.sampler); }));
+  // Bodies, with equal surfaces and meshes sharing one resolved copy.
+  scene::ResourceCache cache(scene.base_dir);
+  for (size_t i = 0; i < scene.bodies.size(); ++i) {
+    const BodyDesc desc = resolveBody(scene, i, cache);
+    withContext(scene, "/bodies/" + std::to_string(i), [&] { return world->createBody(desc); });
+  }
+  // Joints, springs and loads, with names turned into ids.
+  for (size_t i = 0; i < scene.joints.size(); ++i) {
+    const std::string ptr = "/joints/" + std::to_string(i);
+    JointDesc d = scene.joints[i].desc;
+    withContext(scene, ptr, [&] {
+      d.body_a = bodyId(*world, scene.joints[i].body_a, "body_a");
+      d.body_b = bodyId(*world, scene.joints[i].body_b, "body_b");
+      return world->createJoint(d);
+    });
+  }
+  for (size_t i = 0; i < scene.springs.size(); ++i) {
+    SpringDesc d = scene.springs[i].desc;
+    withContext(scene, "/springs/" + std::to_string(i), [&] {
+      d.body = bodyId(*world, scene.springs[i].body, "body");
+      return world->addSpring(d);
+    });
+  }
+  for (size_t i = 0; i < scene.loads.size(); ++i) {
+    LoadDesc d = scene.loads[i].desc;
+    withContext(scene, "/loads/" + std::to_string(i), [&] {
+      d.body = bodyId(*world, scene.loads[i].body, "body");
+      world->addLoad(d);
+      return 0;
+    });
+  }
+  return world;
+}
+
+}  // namespace asperity

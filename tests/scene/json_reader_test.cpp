@@ -1,0 +1,155 @@
+// JsonReader: type and range checks, JSON pointers in messages, syntax errors with line:column.
+#include "scene/json_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "asperity/error.hpp"
+
+namespace asperity::scene {
+namespace {
+
+using nlohmann::json;
+
+// The message of the asperity::Error that `f` throws ("" when it throws none).
+template <typename F>
+std::string errorOf(F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(JsonReader, SyntaxErrorGivesLineAndColumn) {
+  // The stray comma sits on line 3; the parser stops at the "]" after it (column 14).
+  const std::string text = "{\n  \"a\": 1,\n  \"b\": [1, 2,]\n}\n";
+  const std::string message = errorOf([&] { parseJsonText(text, "x.json"); });
+  EXPECT_EQ(message.rfind("x.json:3:14: ", 0), 0u) << message;
+  EXPECT_NE(message.find("syntax error"), std::string::npos) << message;
+}
+
+TEST(JsonReader, SyntaxErrorOnFirstLine) {
+  const std::string message = errorOf([] { parseJsonText("{\"a\" 1}", "y.json"); });
+  EXPECT_EQ(message.rfind("y.json:1:6: ", 0), 0u) << message;
+}
+
+TEST(JsonReader, TruncatedDocument) {
+  const std::string message = errorOf([] { parseJsonText("{\"a\": [1,\n", "z.json"); });
+  EXPECT_EQ(message.rfind("z.json:2:", 0), 0u) << message;
+}
+
+TEST(JsonReader, NumbersWithRanges) {
+  const json j = {{"dt", 0.01}, {"zero", 0.0}, {"neg", -0.1}, {"big", 1e300}};
+  JsonReader r(j, "f.json");
+  EXPECT_EQ(r.number("dt", 1.0, Range::leftOpen(0.0, 1.0)), 0.01);
+  EXPECT_EQ(r.number("absent", 0.5, Range::positive()), 0.5);
+  EXPECT_EQ(errorOf([&] { r.number("zero", 1.0, Range::leftOpen(0.0, 1.0)); }),
+            "f.json: /zero: must be a number in (0, 1], got 0");
+  EXPECT_EQ(errorOf([&] { r.number("neg", 1.0, Range::positive()); }),
+            "f.json: /neg: must be a positive number, got -0.1");
+  EXPECT_EQ(errorOf([&] { r.number("big", 1.0, Range::closed(0.0, 1e6)); }),
+            "f.json: /big: must be at most 1000000, got 1e+300");
+}
+
+TEST(JsonReader, WrongTypesNameTheType) {
+  const json j = {{"a", "1"}, {"b", true}, {"c", json::array({1, 2})}, {"d", 3}};
+  JsonReader r(j, "f.json", "/settings");
+  EXPECT_EQ(errorOf([&] { r.number("a", 0.0); }),
+            "f.json: /settings/a: must be a finite number, got string \"1\"");
+  EXPECT_EQ(errorOf([&] { r.string("b", ""); }),
+            "f.json: /settings/b: must be a string, got boolean true");
+  EXPECT_EQ(errorOf([&] { r.vec3("c", Vec3::Zero()); }),
+            "f.json: /settings/c: must be an array of 3 numbers, got array [1,2]");
+  EXPECT_EQ(errorOf([&] { r.boolean("d", false); }),
+            "f.json: /settings/d: must be true or false, got 3");
+}
+
+TEST(JsonReader, IntegersRefuseFractions) {
+  const json j = {{"n", 4}, {"f", 4.5}, {"w", 4.0}, {"big", 100000}};
+  JsonReader r(j, "f.json");
+  EXPECT_EQ(r.integer("n", 0, 1, 10), 4);
+  EXPECT_EQ(errorOf([&] { r.integer("f", 0, 1, 10); }),
+            "f.json: /f: must be an integer in [1, 10], got 4.5");
+  EXPECT_NE(errorOf([&] { r.integer("w", 0, 1, 10); }), "");
+  EXPECT_EQ(errorOf([&] { r.integer("big", 0, 1, 10000); }),
+            "f.json: /big: must be an integer in [1, 10000], got 100000");
+}
+
+TEST(JsonReader, VectorComponentsHaveTheirOwnPointer) {
+  const json j = {{"half_extents", {0.1, -0.1, 0.1}}};
+  JsonReader r(j, "f.json", "/bodies/2/shapes/0");
+  EXPECT_EQ(errorOf([&] { r.vec3("half_extents", Vec3::Zero(), Range::positive()); }),
+            "f.json: /bodies/2/shapes/0/half_extents/1: must be a positive number, got -0.1");
+}
+
+TEST(JsonReader, DirectionsAreNormalisedAndNonZero) {
+  const json j = {{"a", {0, 0, 2}}, {"z", {0, 0, 0}}, {"u", {0.6, 0.8, 0}}};
+  JsonReader r(j, "f.json");
+  EXPECT_EQ(r.direction("a", Vec3::UnitX()), Vec3::UnitZ());
+  const Vec3 u = r.direction("u", Vec3::UnitX());
+  EXPECT_EQ(u.x(), 0.6);  // already unit (to 1e-12): kept bit for bit
+  EXPECT_EQ(errorOf([&] { r.direction("z", Vec3::UnitX()); }),
+            "f.json: /z: must be a non-zero vector, got [0, 0, 0]");
+}
+
+TEST(JsonReader, Quaternions) {
+  const json j = {{"q", {2, 0, 0, 0}}, {"zero", {0, 0, 0, 0}}, {"short", {1, 0, 0}}};
+  JsonReader r(j, "f.json", "/bodies/0");
+  const Quat q = r.quaternion("q", Quat::Identity());
+  EXPECT_EQ(q.w(), 1.0);
+  EXPECT_EQ(errorOf([&] { r.quaternion("zero", Quat::Identity()); }),
+            "f.json: /bodies/0/zero: must be a non-zero quaternion [w, x, y, z], got [0,0,0,0]");
+  EXPECT_NE(errorOf([&] { r.quaternion("short", Quat::Identity()); }).find("/bodies/0/short"),
+            std::string::npos);
+}
+
+TEST(JsonReader, EnumerationsListTheChoices) {
+  enum class Kind { A, B };
+  const json j = {{"k", "c"}, {"ok", "b"}};
+  JsonReader r(j, "f.json");
+  const std::vector<std::pair<const char*, Kind>> names = {{"a", Kind::A}, {"b", Kind::B}};
+  EXPECT_EQ(r.enumeration("ok", Kind::A, names), Kind::B);
+  EXPECT_EQ(errorOf([&] { r.enumeration("k", Kind::A, names); }),
+            "f.json: /k: must be one of \"a\", \"b\", got string \"c\"");
+  EXPECT_EQ(enumName(Kind::B, names), "b");
+}
+
+TEST(JsonReader, UnknownKeysAreErrors) {
+  const json j = {{"dt", 0.01}, {"dtt", 1}};
+  JsonReader r(j, "f.json", "/settings");
+  r.number("dt", 0.0);
+  r.number("iterations", 0.0);
+  EXPECT_EQ(errorOf([&] { r.finish(); }),
+            "f.json: /settings/dtt: unknown key (expected one of: dt, iterations)");
+}
+
+TEST(JsonReader, PointerTokensAreEscaped) {
+  const json j = {{"a/b~c", "x"}};
+  JsonReader r(j, "f.json");
+  EXPECT_EQ(errorOf([&] { r.finish(); }).rfind("f.json: /a~1b~0c: unknown key", 0), 0u);
+}
+
+TEST(JsonReader, ArraysOfObjects) {
+  const json j = {{"bodies", {json::object(), 3}}};
+  JsonReader r(j, "f.json");
+  EXPECT_EQ(errorOf([&] { r.objects("bodies"); }), "f.json: /bodies/1: must be an object, got 3");
+  const json k = {{"bodies", "x"}};
+  JsonReader s(k, "f.json");
+  EXPECT_EQ(errorOf([&] { s.objects("bodies"); }),
+            "f.json: /bodies: must be an array, got string \"x\"");
+}
+
+TEST(JsonReader, FormatNumberRoundTrips) {
+  for (double x : {0.1, -0.1, 1.0 / 3.0, 1e-300, 6.02214076e23, 0.0, -2.5}) {
+    const std::string text = formatNumber(x);
+    EXPECT_EQ(std::stod(text), x) << text;
+  }
+  EXPECT_EQ(formatNumber(-0.1), "-0.1");
+  EXPECT_EQ(formatNumber(3.0), "3");
+}
+
+}  // namespace
+}  // namespace asperity::scene

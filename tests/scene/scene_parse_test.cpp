@@ -1,0 +1,186 @@
+// Scene files, top level: settings, joints, springs and loads; every kind of bad file names
+// the file and the JSON pointer of the culprit.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "asperity/error.hpp"
+#include "asperity/scene/scene.hpp"
+#include "support/test_support.hpp"
+
+namespace asperity {
+namespace {
+
+// Writes `text` as <tempdir>/scene.json and returns its path.
+std::string writeScene(const std::string& text) {
+  const std::string path = test::tempDir("scene") + "/scene.json";
+  std::ofstream(path) << text;
+  return path;
+}
+
+// The error loading `text` gives, with the file's path replaced by "FILE".
+std::string loadError(const std::string& text) {
+  const std::string path = writeScene(text);
+  try {
+    loadScene(path);
+  } catch (const Error& e) {
+    std::string message = e.what();
+    if (message.rfind(path, 0) == 0) message = "FILE" + message.substr(path.size());
+    return message;
+  }
+  return "";
+}
+
+const char* kTwoBodies = R"("bodies": [
+  {"name": "ground", "type": "static", "shapes": [{"type": "plane"}]},
+  {"name": "box", "shapes": [{"type": "box", "half_extents": [0.1, 0.1, 0.1]}]}])";
+
+TEST(SceneParse, MinimalSceneTakesDefaults) {
+  const SceneDesc scene = loadScene(test::sourcePath("scenes/examples/minimal.json"));
+  const WorldSettings defaults;
+  EXPECT_EQ(scene.settings.dt, defaults.dt);
+  EXPECT_EQ(scene.settings.gravity, Vec3(0.0, 0.0, -9.81));  // z up
+  EXPECT_EQ(scene.sampler, "cone");
+  ASSERT_EQ(scene.bodies.size(), 2u);
+  EXPECT_EQ(scene.bodies[0].type, BodyType::Static);
+  EXPECT_EQ(scene.bodies[1].type, BodyType::Dynamic);
+  EXPECT_EQ(scene.bodies[1].linear_velocity, Vec3(1.0, 0.0, 0.0));
+  EXPECT_EQ(scene.base_dir, test::sourcePath("scenes/examples"));
+}
+
+TEST(SceneParse, SettingsAreRead) {
+  const SceneDesc scene = loadScene(test::sourcePath("scenes/examples/settings.json"));
+  EXPECT_EQ(scene.settings.limit_surface, LimitSurfaceKind::Polygon);
+  EXPECT_EQ(scene.settings.frame_mode, FrameMode::World);
+  EXPECT_EQ(scene.settings.friction.directions, 8);
+  EXPECT_EQ(scene.settings.friction.mu0, 0.2);
+  EXPECT_EQ(scene.settings.friction.mu_max, 4.0f);
+  EXPECT_EQ(scene.settings.friction.patch_width, 0.02);
+  EXPECT_EQ(scene.settings.friction.patch_resolution, 16);
+}
+
+TEST(SceneParse, JointsSpringsAndLoads) {
+  const SceneDesc joints = loadScene(test::sourcePath("scenes/examples/joints.json"));
+  ASSERT_EQ(joints.joints.size(), 3u);
+  EXPECT_EQ(joints.joints[0].desc.type, JointType::Distance);
+  EXPECT_EQ(joints.joints[0].body_a, "head");
+  EXPECT_EQ(joints.joints[0].desc.rest_length, 0.05);
+  EXPECT_EQ(joints.joints[0].desc.amplitude, 0.02);
+  EXPECT_EQ(joints.joints[1].desc.rest_length, -1.0);  // absent: from the anchors
+  EXPECT_EQ(joints.joints[2].desc.type, JointType::Hinge);
+  const SceneDesc spring = loadScene(test::sourcePath("scenes/examples/spring.json"));
+  ASSERT_EQ(spring.springs.size(), 1u);
+  EXPECT_EQ(spring.springs[0].desc.stiffness, 200.0);
+  EXPECT_EQ(spring.springs[0].desc.target_velocity, Vec3(0.2, 0.0, 0.0));
+  const SceneDesc loads = loadScene(test::sourcePath("scenes/examples/loads.json"));
+  ASSERT_EQ(loads.loads.size(), 4u);
+  EXPECT_EQ(loads.loads[0].desc.kind, LoadDesc::Kind::Impulse);
+  EXPECT_EQ(loads.loads[0].body, "middle");
+  EXPECT_EQ(loads.loads[3].desc.kind, LoadDesc::Kind::AngularImpulse);
+  EXPECT_EQ(loads.loads[1].desc.end, 1.5);
+}
+
+TEST(SceneParse, SyntaxErrorNamesLineAndColumn) {
+  EXPECT_EQ(loadError("{\n  \"settings\": {\"dt\": 0.01,}\n}").rfind("FILE:2:27: syntax error", 0),
+            0u);
+}
+
+TEST(SceneParse, MissingFile) {
+  try {
+    loadScene("/nonexistent/scene.json");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "/nonexistent/scene.json: cannot open file");
+  }
+}
+
+TEST(SceneParse, TopLevelMustBeAnObject) {
+  EXPECT_EQ(loadError("[1, 2]"), "FILE: /: must be an object, got array [1,2]");
+}
+
+TEST(SceneParse, UnknownKeys) {
+  EXPECT_EQ(loadError("{\"bodys\": []}").rfind("FILE: /bodys: unknown key (expected one of:", 0),
+            0u);
+  EXPECT_EQ(loadError("{\"settings\": {\"tiem_step\": 1}}")
+                .rfind("FILE: /settings/tiem_step: unknown key", 0),
+            0u);
+}
+
+TEST(SceneParse, SettingsRanges) {
+  EXPECT_EQ(loadError(R"({"settings": {"dt": 0}})"),
+            "FILE: /settings/dt: must be a number in (0, 1], got 0");
+  EXPECT_EQ(loadError(R"({"settings": {"dt": 2}})"),
+            "FILE: /settings/dt: must be a number in (0, 1], got 2");
+  EXPECT_EQ(loadError(R"({"settings": {"dt": -0.01}})"),
+            "FILE: /settings/dt: must be a number in (0, 1], got -0.01");
+  EXPECT_EQ(loadError(R"({"settings": {"iterations": 0}})"),
+            "FILE: /settings/iterations: must be an integer in [1, 10000], got 0");
+  EXPECT_EQ(loadError(R"({"settings": {"directions": 3}})"),
+            "FILE: /settings/directions: must be an integer in [4, 64], got 3");
+  EXPECT_EQ(loadError(R"({"settings": {"patch_width": 0}})"),
+            "FILE: /settings/patch_width: must be a positive number, got 0");
+  EXPECT_EQ(loadError(R"({"settings": {"gravity": [0, 0, 1e300]}})"),
+            "FILE: /settings/gravity/2: must be a number in [-1000000, 1000000], got 1e+300");
+  EXPECT_EQ(loadError(R"({"settings": {"mu0": "0.2"}})"),
+            "FILE: /settings/mu0: must be a number in [0, 100], got string \"0.2\"");
+  EXPECT_EQ(loadError(R"({"settings": {"sampler": ""}})"),
+            "FILE: /settings/sampler: must be a sampler name, got \"\"");
+}
+
+TEST(SceneParse, HugeNumberLiteralIsASyntaxError) {
+  // 1e999 does not fit a double; the JSON reader refuses it with its position.
+  EXPECT_EQ(loadError("{\"settings\":\n  {\"dt\": 1e999}}"),
+            "FILE:2:10: number overflow parsing '1e999'");
+}
+
+TEST(SceneParse, BadEnumerationStrings) {
+  EXPECT_EQ(loadError(R"({"settings": {"friction": "cone"}})"),
+            "FILE: /settings/friction: must be one of \"coulomb\", \"box\", \"polygon\", got "
+            "string \"cone\"");
+  EXPECT_EQ(loadError(R"({"settings": {"frame": "tangent"}})"),
+            "FILE: /settings/frame: must be one of \"world\", \"body\", \"auto\", \"texture\", "
+            "got string \"tangent\"");
+}
+
+TEST(SceneParse, ZeroAxis) {
+  EXPECT_EQ(loadError(R"({"settings": {"world_axis": [0, 0, 0]}})"),
+            "FILE: /settings/world_axis: must be a non-zero vector, got [0, 0, 0]");
+}
+
+TEST(SceneParse, JointToUnknownBody) {
+  EXPECT_EQ(loadError(std::string("{") + kTwoBodies +
+                      R"(, "joints": [{"type": "ball", "body_a": "box", "body_b": "lid"}]})"),
+            "FILE: /joints/0/body_b: unknown body \"lid\"");
+  EXPECT_EQ(loadError(std::string("{") + kTwoBodies + R"(, "joints": [{"body_a": "box"}]})"),
+            "FILE: /joints/0: missing key \"body_b\" (a string)");
+  EXPECT_EQ(loadError(std::string("{") + kTwoBodies +
+                      R"(, "joints": [{"body_a": "box", "body_b": "box"}]})"),
+            "FILE: /joints/0/body_b: must differ from body_a (\"box\")");
+}
+
+TEST(SceneParse, BadJointType) {
+  EXPECT_EQ(
+      loadError(std::string("{") + kTwoBodies +
+                R"(, "joints": [{"type": "slider", "body_a": "ground", "body_b": "box"}]})"),
+      "FILE: /joints/0/type: must be one of \"distance\", \"ball\", \"hinge\", \"fixed\", got "
+      "string \"slider\"");
+}
+
+TEST(SceneParse, SpringAndLoadErrors) {
+  EXPECT_EQ(loadError(std::string("{") + kTwoBodies + R"(, "springs": [{"body": "crate"}]})"),
+            "FILE: /springs/0/body: unknown body \"crate\"");
+  EXPECT_EQ(loadError(std::string("{") + kTwoBodies +
+                      R"(, "springs": [{"body": "box", "stiffness": -1}]})"),
+            "FILE: /springs/0/stiffness: must be a non-negative number, got -1");
+  EXPECT_EQ(
+      loadError(std::string("{") + kTwoBodies + R"(, "loads": [{"body": "box", "kind": "push"}]})"),
+      "FILE: /loads/0/kind: must be one of \"force\", \"torque\", \"impulse\", "
+      "\"angular_impulse\", got string \"push\"");
+  EXPECT_EQ(loadError(std::string("{") + kTwoBodies +
+                      R"(, "loads": [{"body": "box", "start": 2, "end": 1}]})"),
+            "FILE: /loads/0/end: must be a number in [2, 1e+30], got 1");
+}
+
+}  // namespace
+}  // namespace asperity
