@@ -92,6 +92,24 @@ TEST(BoxLimit, FromDirectional) {
   EXPECT_DOUBLE_EQ(box5.mu_neg_b, odd.along(1.5 * kPi));
 }
 
+// Projecting twice equals projecting once, for every limit surface.
+TEST(LimitSurfaces, Idempotent) {
+  const CoulombLimit disc{0.6};
+  const BoxLimit box{0.4, 0.3, 0.1, 0.2};
+  const PolygonLimit poly{spikyMu(64, 99)};
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> coord(-3.0, 3.0);
+  for (int i = 0; i < 200; ++i) {
+    const Vec2 x(coord(rng), coord(rng));
+    const Vec2 c = disc.project(x, 1.7);
+    EXPECT_LT((disc.project(c, 1.7) - c).norm(), 1e-12);
+    const Vec2 b = box.project(x, 1.7);
+    EXPECT_EQ(box.project(b, 1.7), b);
+    const Vec2 p = poly.project(x, 1.7);
+    EXPECT_LT((poly.project(p, 1.7) - p).norm(), 1e-12);
+  }
+}
+
 // Points inside the star polygon stay put (random polygons, several N).
 TEST(PolygonLimit, InsideStays) {
   for (int n : {4, 5, 16, 64}) {
