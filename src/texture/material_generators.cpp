@@ -123,7 +123,7 @@ NormalMap makeMetal(const GeneratorContext& ctx) {
 
 GeneratorParam slopeParam(double value) {
   return numberParam("slope", value, 0.0, 10.0,
-                     "root mean square slope |grad h| (-); 0 gives a flat map");
+                     "root mean square of the slope magnitude (-); 0 gives a flat map");
 }
 
 }  // namespace
