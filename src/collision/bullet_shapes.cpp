@@ -25,8 +25,8 @@ std::string meshName(const Shape& shape) {
                                                         : std::string();
 }
 
-// A convex hull shrunk by the margin, so that hull + margin (what Bullet collides) matches
-// the given points up to rounded edges; the polyhedral features shift the faces back out.
+// The convex hull of the points, with polyhedral features for face clipping against boxes
+// and hulls (exact); Bullet's other convex algorithms see it grown by its margin.
 std::unique_ptr<btCollisionShape> makeHull(const Shape& shape, double margin) {
   if (!shape.mesh || shape.mesh->vertices.size() < 4) {
     throw Error("collision: convex hull" + meshName(shape) + " needs at least 4 points");
@@ -36,20 +36,15 @@ std::unique_ptr<btCollisionShape> makeHull(const Shape& shape, double margin) {
   for (const Vec3& v : shape.mesh->vertices) coords.insert(coords.end(), {v.x(), v.y(), v.z()});
   btConvexHullComputer hull;
   const int count = static_cast<int>(shape.mesh->vertices.size());
-  btScalar shrunk = hull.compute(coords.data(), 3 * sizeof(double), count,
-                                 static_cast<btScalar>(margin), btScalar(0.25));
-  if (shrunk < 0 || hull.vertices.size() < 4) {
-    // Degenerate for shrinking (flat): keep the exact points and no margin.
-    shrunk = hull.compute(coords.data(), 3 * sizeof(double), count, 0, 0);
-    if (shrunk < 0 || hull.vertices.size() < 4) {
-      throw Error("collision: convex hull" + meshName(shape) + " is flat or degenerate");
-    }
+  if (hull.compute(coords.data(), 3 * sizeof(double), count, 0, 0) < 0 ||
+      hull.vertices.size() < 4 || hull.faces.size() < 4) {
+    throw Error("collision: convex hull" + meshName(shape) + " is flat or degenerate");
   }
   auto out = std::make_unique<btConvexHullShape>();
   for (int i = 0; i < hull.vertices.size(); ++i) out->addPoint(hull.vertices[i], false);
   out->recalcLocalAabb();
-  out->setMargin(shrunk);
-  out->initializePolyhedralFeatures(1);
+  out->setMargin(static_cast<btScalar>(margin));
+  out->initializePolyhedralFeatures();
   return out;
 }
 

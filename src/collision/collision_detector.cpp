@@ -2,12 +2,12 @@
 //
 // Bullet's role: Bullet's collision module (single precision, no dynamics world) finds the
 // pairs (btDbvtBroadphase) and runs the narrowphase (btCollisionDispatcher over a
-// btCollisionWorld): box-box clipping, convex-plane with perturbed support points (so that a
-// box resting on a plane gets its four corners in one call), GJK/EPA and polyhedral clipping
-// for convex pairs, BVH traversal for static triangle meshes. Its persistent manifolds keep
-// contact points alive across calls; each point gets an id stored in the manifold point, from
-// which the contact key is hashed. Everything after that is done here in double precision:
-// witness points from the manifold's local points through the double body poses, snapped
+// btCollisionWorld): box-box clipping, GJK/EPA and polyhedral clipping for convex pairs, BVH
+// traversal for static triangle meshes. Convex shapes against planes are done here exactly
+// (plane_contacts: a box resting on a plane gets its four corners in one call). Its persistent
+// manifolds keep contact points alive across calls; each point gets an id stored in the manifold
+// point, from which the contact key is hashed. Everything after that is done here in double
+// precision: witness points from the manifold's local points through the double body poses, snapped
 // onto the exact primitive surfaces (contact_geometry), phi from the witness points.
 // Concave mesh pairs where both meshes are closed go through signed distance fields instead
 // (sdf_contacts): the near callback records those pairs and Bullet does not touch them.
@@ -20,7 +20,7 @@
 // dynamic, the lower id is A. The normal points from B toward A, phi >= 0 is the depth.
 #include "asperity/collision/collision_detector.hpp"
 
-#include <BulletCollision/CollisionDispatch/btConvexPlaneCollisionAlgorithm.h>
+#include <BulletCollision/CollisionShapes/btConvexPolyhedron.h>
 #include <btBulletCollisionCommon.h>
 
 #include <algorithm>
@@ -35,6 +35,7 @@
 #include "asperity/error.hpp"
 #include "collision/bullet_shapes.hpp"
 #include "collision/contact_geometry.hpp"
+#include "collision/plane_contacts.hpp"
 #include "collision/sdf_contacts.hpp"
 
 namespace asperity {
@@ -59,6 +60,9 @@ uint64_t contactKey(const Contact& c, uint64_t point_id) {
   return mix(h, point_id);
 }
 
+// Query points per mesh for the signed-distance path (bounds the cost per pair and call).
+constexpr size_t kMaxSurfaceSamples = 50000;
+
 // One shape of one body, as one Bullet collision object.
 struct ShapeRecord {
   BodyId body = kNoBody;
@@ -68,9 +72,32 @@ struct ShapeRecord {
   BulletShape bullet;
   std::unique_ptr<btCollisionObject> object;
   std::shared_ptr<const SignedDistanceField> sdf;  // closed meshes of mesh-only bodies
-  std::vector<int> vertex_triangle;                // a triangle using each vertex (SDF pairs)
-  Transform world;                                 // shape frame in world, this call
+  SurfaceSamples samples;                          // query points for the other's field
+  std::vector<Vec4> hull_planes;  // outward unit normal and offset per face (hull shapes)
+  Transform world;                // shape frame in world, this call
 };
+
+// Bullet grows hulls and triangles by their margins in some of its algorithms and not in
+// others; the witness point is put back onto the true surface from what is known exactly:
+// the hull's face planes, the static mesh's triangle.
+Vec3 onTrueSurface(const ShapeRecord& r, const Vec3& witness, const Vec3& outward, int feature) {
+  if (!r.hull_planes.empty()) {
+    // Signed distance to the hull (exact near a face), removed along the contact normal.
+    const Vec3 local = r.world.applyInverse(witness);
+    double s = -1e300;
+    for (const Vec4& p : r.hull_planes) s = std::max(s, p.head<3>().dot(local) + p.w());
+    return witness - s * outward;
+  }
+  if (r.shape.type == ShapeType::TriangleMesh && feature >= 0 &&
+      feature < static_cast<int>(r.shape.mesh->triangles.size())) {
+    const auto& tri = r.shape.mesh->triangles[static_cast<size_t>(feature)];
+    const auto& v = r.shape.mesh->vertices;
+    return r.world.apply(
+        closestPointOnTriangle(r.world.applyInverse(witness), v[static_cast<size_t>(tri[0])],
+                               v[static_cast<size_t>(tri[1])], v[static_cast<size_t>(tri[2])]));
+  }
+  return witness;
+}
 
 bool isA(const ShapeRecord& x, const ShapeRecord& y) {
   const bool xd = x.body_type == BodyType::Dynamic, yd = y.body_type == BodyType::Dynamic;
@@ -119,9 +146,9 @@ struct CollisionDetector::Impl {
   std::unique_ptr<btDbvtBroadphase> broadphase;
   std::unique_ptr<btCollisionWorld> world;
   PairFilter filter;
-  btConvexPlaneCollisionAlgorithm::CreateFunc multipoint, multipoint_swapped;
 
-  std::vector<std::pair<int, int>> sdf_pairs;  // record pairs found by the broadphase
+  std::vector<std::pair<int, int>> plane_pairs;  // record pairs found by the broadphase
+  std::vector<std::pair<int, int>> sdf_pairs;
   std::vector<Contact> contacts;
   uint64_t next_point_id = 1;
 
@@ -135,16 +162,25 @@ struct CollisionDetector::Impl {
     return !ignored.count({std::min(a.body, b.body), std::max(a.body, b.body)});
   }
 
+  bool isPlanePair(int r0, int r1) const {
+    return records[static_cast<size_t>(r0)].shape.type == ShapeType::Plane ||
+           records[static_cast<size_t>(r1)].shape.type == ShapeType::Plane;
+  }
+
   bool isSdfPair(int r0, int r1) const {
     return records[static_cast<size_t>(r0)].sdf && records[static_cast<size_t>(r1)].sdf;
   }
 
-  // Bullet's narrowphase for ordinary pairs; signed-distance pairs are only recorded.
+  // Bullet's narrowphase for ordinary pairs; plane and signed-distance pairs are only recorded.
   static void nearCallback(btBroadphasePair& pair, btCollisionDispatcher& d,
                            const btDispatcherInfo& info) {
     Impl* self = static_cast<Dispatcher&>(d).impl;
     const int r0 = static_cast<btCollisionObject*>(pair.m_pProxy0->m_clientObject)->getUserIndex();
     const int r1 = static_cast<btCollisionObject*>(pair.m_pProxy1->m_clientObject)->getUserIndex();
+    if (self->isPlanePair(r0, r1)) {
+      self->plane_pairs.emplace_back(r0, r1);
+      return;
+    }
     if (self->isSdfPair(r0, r1)) {
       self->sdf_pairs.emplace_back(r0, r1);
       return;
@@ -161,9 +197,15 @@ struct CollisionDetector::Impl {
     config.reset();
   }
 
+  // How far apart gap contacts of this shape are reported (report_gaps only).
+  double gapReach(const ShapeRecord& r) const {
+    return settings.contact_margin > 0 ? settings.contact_margin : 0.02 * shapeSize(r.shape);
+  }
+
   void createWorld();
   void addBody(BodyId id, const Body& body, bool mesh_only);
   void collectManifolds();
+  void collectPlane(int r0, int r1);
   void collectSdf(int r0, int r1);
   void addSdfHits(const ShapeRecord& field, const ShapeRecord& query, bool field_is_a);
 };
@@ -173,17 +215,6 @@ void CollisionDetector::Impl::createWorld() {
   dispatcher = std::make_unique<Dispatcher>(config.get(), this);
   dispatcher->setDispatcherFlags(btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
   dispatcher->setNearCallback(&Impl::nearCallback);
-  // Flat-bottomed shapes on planes: perturbed support queries find every corner at once
-  // (spheres keep the single exact point).
-  multipoint.m_numPerturbationIterations = 8;
-  multipoint.m_minimumPointsPerturbationThreshold = 4;
-  multipoint_swapped = multipoint;
-  multipoint_swapped.m_swapped = true;
-  for (int type : {BOX_SHAPE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE, CAPSULE_SHAPE_PROXYTYPE,
-                   CONVEX_HULL_SHAPE_PROXYTYPE}) {
-    dispatcher->registerCollisionCreateFunc(type, STATIC_PLANE_PROXYTYPE, &multipoint);
-    dispatcher->registerCollisionCreateFunc(STATIC_PLANE_PROXYTYPE, type, &multipoint_swapped);
-  }
   broadphase = std::make_unique<btDbvtBroadphase>();
   world = std::make_unique<btCollisionWorld>(dispatcher.get(), broadphase.get(), config.get());
   filter.impl = this;
@@ -203,10 +234,15 @@ void CollisionDetector::Impl::addBody(BodyId id, const Body& body, bool mesh_onl
       auto& cached = sdf_cache[rec.shape.mesh];
       if (!cached) cached = SignedDistanceField::build(*rec.shape.mesh, settings.sdf_resolution);
       rec.sdf = cached;
-      rec.vertex_triangle.assign(rec.shape.mesh->vertices.size(), -1);
-      for (size_t t = 0; t < rec.shape.mesh->triangles.size(); ++t) {
-        for (int v : rec.shape.mesh->triangles[t]) {
-          rec.vertex_triangle[static_cast<size_t>(v)] = static_cast<int>(t);
+      rec.samples = surfaceSamples(*rec.shape.mesh, rec.sdf->cellSize(), kMaxSurfaceSamples);
+    }
+    // Face planes of hulls, for putting witness points back onto the true surface.
+    if (rec.bullet.shape->getShapeType() == CONVEX_HULL_SHAPE_PROXYTYPE) {
+      const auto* hull = static_cast<const btConvexHullShape*>(rec.bullet.shape.get());
+      if (const btConvexPolyhedron* poly = hull->getConvexPolyhedron()) {
+        for (int f = 0; f < poly->m_faces.size(); ++f) {
+          const btScalar* p = poly->m_faces[f].m_plane;
+          rec.hull_planes.emplace_back(p[0], p[1], p[2], p[3]);
         }
       }
     }
@@ -260,11 +296,36 @@ void CollisionDetector::Impl::collectManifolds() {
                          : -1;
       c.feature_a = swap ? f1 : f0;
       c.feature_b = swap ? f0 : f1;
+      c.witness_a = onTrueSurface(ra, c.witness_a, -c.normal, c.feature_a);
+      c.witness_b = onTrueSurface(rb, c.witness_b, c.normal, c.feature_b);
       finishContact(c, ra.shape, ra.world, rb.shape, rb.world);
       if (c.phi < 0 && !settings.report_gaps) continue;
       c.key = contactKey(c, point_id);
       contacts.push_back(c);
     }
+  }
+}
+
+void CollisionDetector::Impl::collectPlane(int r0, int r1) {
+  // The plane is always B (its body is static or kinematic, the other one dynamic).
+  const bool plane_first = records[static_cast<size_t>(r0)].shape.type == ShapeType::Plane;
+  const ShapeRecord& ra = records[static_cast<size_t>(plane_first ? r1 : r0)];
+  const ShapeRecord& rb = records[static_cast<size_t>(plane_first ? r0 : r1)];
+  if (ra.shape.type == ShapeType::Plane) return;  // two planes never touch
+  const WorldPlane plane = worldPlane(rb.shape, rb.world);
+  const double reach = settings.report_gaps ? gapReach(ra) : 0.0;
+  for (const PlanePoint& p : planePoints(ra.shape, ra.world, plane, reach)) {
+    Contact c;
+    c.body_a = ra.body, c.body_b = rb.body;
+    c.shape_a = ra.index, c.shape_b = rb.index;
+    c.normal = plane.normal;
+    c.witness_a = p.point;
+    c.witness_b = p.point - p.distance * plane.normal;
+    c.phi = -p.distance;
+    c.point = 0.5 * (c.witness_a + c.witness_b);
+    if (ra.shape.type == ShapeType::Box) c.feature_a = boxFace(ra.world, -c.normal);
+    c.key = contactKey(c, static_cast<uint64_t>(p.id) | (uint64_t{1} << 61));
+    contacts.push_back(c);
   }
 }
 
@@ -277,7 +338,7 @@ void CollisionDetector::Impl::addSdfHits(const ShapeRecord& field, const ShapeRe
       settings.report_gaps ? (settings.contact_margin > 0 ? settings.contact_margin : cell) : 0.0;
   q.max_hits = settings.sdf_max_contacts;
   q.min_spacing = settings.sdf_min_spacing * cell;
-  const auto hits = sdfHits(*field.sdf, field.world, query.shape.mesh->vertices, query.world, q);
+  const auto hits = sdfHits(*field.sdf, field.world, query.samples.points, query.world, q);
   for (const SdfHit& h : hits) {
     // The query vertex is the deepest point of its shape; the field gives the surface point.
     Contact c;
@@ -285,7 +346,7 @@ void CollisionDetector::Impl::addSdfHits(const ShapeRecord& field, const ShapeRe
     const ShapeRecord& rb = field_is_a ? query : field;
     c.body_a = ra.body, c.body_b = rb.body;
     c.shape_a = ra.index, c.shape_b = rb.index;
-    const int query_triangle = query.vertex_triangle[static_cast<size_t>(h.vertex)];
+    const int query_triangle = query.samples.triangle[static_cast<size_t>(h.vertex)];
     c.witness_a = field_is_a ? h.surface : h.point;
     c.witness_b = field_is_a ? h.point : h.surface;
     c.normal = field_is_a ? Vec3(-h.outward) : h.outward;
@@ -347,9 +408,11 @@ const std::vector<Contact>& CollisionDetector::detect(std::span<const Body> bodi
     rec.object->setWorldTransform(toBt(rec.world));
   }
   s.contacts.clear();
+  s.plane_pairs.clear();
   s.sdf_pairs.clear();
   if (s.world) s.world->performDiscreteCollisionDetection();
   if (s.dispatcher) s.collectManifolds();
+  for (const auto& [r0, r1] : s.plane_pairs) s.collectPlane(r0, r1);
   for (const auto& [r0, r1] : s.sdf_pairs) s.collectSdf(r0, r1);
   // Deterministic order (SPEC: same input, same contacts).
   std::sort(s.contacts.begin(), s.contacts.end(), [](const Contact& a, const Contact& b) {

@@ -2,8 +2,49 @@
 #include "collision/sdf_contacts.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace asperity::collision_detail {
+
+namespace {
+
+// Subdivisions of a triangle so that its longest edge is cut into pieces below `spacing`.
+int subdivisions(const Vec3& a, const Vec3& b, const Vec3& c, double spacing) {
+  const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+  return std::max(1, static_cast<int>(std::ceil(longest / spacing)));
+}
+
+}  // namespace
+
+SurfaceSamples surfaceSamples(const TriangleMeshData& mesh, double spacing, size_t max_points) {
+  auto vertex = [&](int i) { return mesh.vertices[static_cast<size_t>(i)]; };
+  // Coarsen the spacing until the estimated count fits.
+  for (int attempt = 0; attempt < 32; ++attempt) {
+    size_t estimate = 0;
+    for (const auto& t : mesh.triangles) {
+      const auto n =
+          static_cast<size_t>(subdivisions(vertex(t[0]), vertex(t[1]), vertex(t[2]), spacing));
+      estimate += (n + 1) * (n + 2) / 2;
+    }
+    if (estimate <= max_points) break;
+    spacing *= 1.5;
+  }
+  // Barycentric grid points (i / n, j / n) of every triangle, vertices and edges included.
+  SurfaceSamples out;
+  for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Vec3 a = vertex(mesh.triangles[t][0]), b = vertex(mesh.triangles[t][1]),
+               c = vertex(mesh.triangles[t][2]);
+    const int n = subdivisions(a, b, c, spacing);
+    for (int i = 0; i <= n; ++i) {
+      for (int j = 0; i + j <= n; ++j) {
+        const double u = static_cast<double>(i) / n, v = static_cast<double>(j) / n;
+        out.points.push_back(a + u * (b - a) + v * (c - a));
+        out.triangle.push_back(static_cast<int>(t));
+      }
+    }
+  }
+  return out;
+}
 
 std::vector<SdfHit> sdfHits(const SignedDistanceField& field, const Transform& field_world,
                             std::span<const Vec3> points, const Transform& points_world,

@@ -1,14 +1,24 @@
 // Contacts from a signed distance field queried with another shape's surface points (the
-// vertices of its mesh): the concave-mesh path of the collision stage.
+// vertices of its mesh plus points spread over its triangles, so that coarse meshes touching
+// face to face are seen): the concave-mesh path of the collision stage.
 #pragma once
 
 #include <span>
 #include <vector>
 
 #include "asperity/collision/signed_distance_field.hpp"
+#include "asperity/geometry/shape.hpp"
 #include "asperity/math/types.hpp"
 
 namespace asperity::collision_detail {
+
+// Points on a mesh's surface: its vertices and a barycentric grid on each triangle with
+// about `spacing` between points (coarsened so that there are at most `max_points`).
+struct SurfaceSamples {
+  std::vector<Vec3> points;
+  std::vector<int> triangle;  // the triangle each point lies on
+};
+SurfaceSamples surfaceSamples(const TriangleMeshData& mesh, double spacing, size_t max_points);
 
 // One surface point of the query shape inside (or near) the field's shape.
 struct SdfHit {

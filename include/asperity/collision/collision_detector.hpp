@@ -15,8 +15,9 @@
 // Concave meshes: a static TriangleMesh is a BVH of its triangles; a dynamic TriangleMesh
 // collides as the convex hull of its vertices, except against another TriangleMesh shape when
 // every shape of both bodies is a TriangleMesh and both meshes are closed: then the signed
-// distance path is used (a grid SDF of each closed mesh, queried with the other mesh's
-// vertices), which sees concave features such as a nut's bore (see signed_distance_field.hpp).
+// distance path is used (a grid SDF of each closed mesh, queried with points spread over the
+// other mesh: its vertices and a grid on each triangle at the SDF cell size), which sees
+// concave features such as a nut's bore (see signed_distance_field.hpp).
 #pragma once
 
 #include <memory>

@@ -1,0 +1,130 @@
+// Bodies and meshes shared by the collision tests and the collision benchmark.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "asperity/dynamics/body.hpp"
+
+namespace asperity::collision_test {
+
+inline Body makeBody(BodyType type, const Vec3& position, const Quat& rotation, Shape shape) {
+  Body body;
+  body.type = type;
+  body.pose.position = position;
+  body.pose.rotation = rotation;
+  body.inverse_mass = type == BodyType::Dynamic ? 1.0 : 0.0;
+  body.shapes.push_back(std::move(shape));
+  return body;
+}
+
+// The static ground: the plane z = 0, normal +z.
+inline Body groundPlane() {
+  Shape plane;
+  plane.type = ShapeType::Plane;
+  return makeBody(BodyType::Static, Vec3::Zero(), Quat::Identity(), plane);
+}
+
+inline Body boxBody(const Vec3& half, const Vec3& position, double yaw) {
+  Shape box;
+  box.type = ShapeType::Box;
+  box.half_extents = half;
+  return makeBody(BodyType::Dynamic, position, Quat(Eigen::AngleAxisd(yaw, Vec3::UnitZ())), box);
+}
+
+inline Body sphereBody(double radius, const Vec3& position) {
+  Shape sphere;
+  sphere.type = ShapeType::Sphere;
+  sphere.radius = radius;
+  return makeBody(BodyType::Dynamic, position, Quat::Identity(), sphere);
+}
+
+inline Body capsuleBody(double radius, double half_height, const Vec3& position, const Quat& q) {
+  Shape capsule;
+  capsule.type = ShapeType::Capsule;
+  capsule.radius = radius;
+  capsule.half_height = half_height;
+  return makeBody(BodyType::Dynamic, position, q, capsule);
+}
+
+inline Body cylinderBody(double radius, double half_height, const Vec3& position, const Quat& q) {
+  Shape cylinder;
+  cylinder.type = ShapeType::Cylinder;
+  cylinder.radius = radius;
+  cylinder.half_height = half_height;
+  return makeBody(BodyType::Dynamic, position, q, cylinder);
+}
+
+// The corners of a cube of half size h.
+inline std::shared_ptr<TriangleMeshData> cubePoints(double h) {
+  auto mesh = std::make_shared<TriangleMeshData>();
+  for (int i = 0; i < 8; ++i) {
+    mesh->vertices.emplace_back(i & 1 ? h : -h, i & 2 ? h : -h, i & 4 ? h : -h);
+  }
+  return mesh;
+}
+
+inline Body hullBody(std::shared_ptr<const TriangleMeshData> points, const Vec3& position) {
+  Shape hull;
+  hull.type = ShapeType::ConvexHull;
+  hull.mesh = std::move(points);
+  return makeBody(BodyType::Dynamic, position, Quat::Identity(), hull);
+}
+
+// A closed box mesh (12 outward-wound triangles) of half extents h.
+inline std::shared_ptr<TriangleMeshData> boxMesh(const Vec3& h) {
+  auto mesh = cubePoints(1.0);
+  for (Vec3& v : mesh->vertices) v = v.cwiseProduct(h);
+  // Faces as quads of corner indices (bit 0 = x, 1 = y, 2 = z), counter-clockwise outside.
+  const int quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4},
+                           {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (const auto& q : quads) {
+    mesh->triangles.push_back({q[0], q[1], q[2]});
+    mesh->triangles.push_back({q[0], q[2], q[3]});
+  }
+  return mesh;
+}
+
+inline Body meshBody(std::shared_ptr<const TriangleMeshData> mesh, BodyType type,
+                     const Vec3& position, const Quat& q = Quat::Identity()) {
+  Shape shape;
+  shape.type = ShapeType::TriangleMesh;
+  shape.mesh = std::move(mesh);
+  return makeBody(type, position, q, shape);
+}
+
+// A static ground made of two triangles, the square [-half, half]^2 at z = 0.
+inline Body groundMesh(double half) {
+  auto mesh = std::make_shared<TriangleMeshData>();
+  mesh->vertices = {Vec3(-half, -half, 0), Vec3(half, -half, 0), Vec3(half, half, 0),
+                    Vec3(-half, half, 0)};
+  mesh->triangles = {{0, 1, 2}, {0, 2, 3}};
+  return meshBody(mesh, BodyType::Static, Vec3::Zero());
+}
+
+// A closed square "nut": outer half width `outer`, a square bore of half width `inner`,
+// half height `hh`, along z (32 triangles).
+inline std::shared_ptr<TriangleMeshData> squareNutMesh(double outer, double inner, double hh) {
+  auto mesh = std::make_shared<TriangleMeshData>();
+  // Rings of 4 corners: outer bottom 0-3, outer top 4-7, inner bottom 8-11, inner top 12-15.
+  const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+  for (double w : {outer, inner}) {
+    for (double z : {-hh, hh}) {
+      for (int c = 0; c < 4; ++c) mesh->vertices.emplace_back(w * sx[c], w * sy[c], z);
+    }
+  }
+  auto quad = [&](int a, int b, int c, int d) {
+    mesh->triangles.push_back({a, b, c});
+    mesh->triangles.push_back({a, c, d});
+  };
+  for (int c = 0; c < 4; ++c) {
+    const int n = (c + 1) % 4;
+    quad(c, n, 4 + n, 4 + c);            // outer wall
+    quad(8 + n, 8 + c, 12 + c, 12 + n);  // bore wall (faces the axis)
+    quad(4 + c, 4 + n, 12 + n, 12 + c);  // top
+    quad(n, c, 8 + c, 8 + n);            // bottom
+  }
+  return mesh;
+}
+
+}  // namespace asperity::collision_test
