@@ -80,6 +80,11 @@ void ContactSolver::prepareContact(const Contact& c, ContactRow& row) const {
   k(0, 1) = k(1, 0) = row.ra_t.dot(row.ia_b) + row.rb_t.dot(row.ib_b);
   const double det = k.determinant();
   row.inv_k_tb = det > 1e-300 ? Eigen::Matrix2d(k.inverse()) : Eigen::Matrix2d::Zero();
+  // Largest eigenvalue of K: the step 1 / k_max never overshoots along any direction.
+  const double mean = 0.5 * (k(0, 0) + k(1, 1));
+  const double half_gap = 0.5 * (k(0, 0) - k(1, 1));
+  const double k_max = mean + std::sqrt(half_gap * half_gap + k(0, 1) * k(0, 1));
+  row.inv_k_slide = k_max > 0.0 ? 1.0 / k_max : 0.0;
   // Separated (speculative) contacts may close their gap within the step; restitution 0.
   row.target_n = c.phi < 0.0 ? c.phi / settings_.dt : 0.0;
   // Split impulse: push the penetration beyond the slop out at a bounded pseudo-velocity.
@@ -192,7 +197,13 @@ double ContactSolver::sweepContacts(std::span<const Limit> limits) {
       const Vec2 vel(r.t.dot(dv) + wa.dot(r.ra_t) - wb.dot(r.rb_t),
                      r.bt.dot(dv) + wa.dot(r.ra_b) - wb.dot(r.rb_b));
       const Vec2 old(r.lambda_t, r.lambda_b);
-      const Vec2 next = limits[i].project(old - r.inv_k_tb * vel, ln);
+      const Vec2 block = old - r.inv_k_tb * vel;
+      Vec2 next = limits[i].project(block, ln);
+      // Sliding (the block update left the limit set): redo the update in the isotropic
+      // metric 1 / k_max so that the projected friction opposes the slip velocity (maximal
+      // dissipation). Projecting the K^-1-metric update instead turns the friction off the
+      // slip direction wherever K couples t and b, which spins a sliding box about n.
+      if (next != block) next = limits[i].project(old - r.inv_k_slide * vel, ln);
       const Vec2 d = next - old;
       r.lambda_t = next.x();
       r.lambda_b = next.y();

@@ -4,7 +4,9 @@
 // Rows act on A with the contact conventions of collision/contact.hpp. Per iteration, in a
 // fixed order: joint rows, then each contact's normal row (lambda_n >= 0), its tangential
 // block (the unconstrained 2x2 update, then the accumulated (lambda_t, lambda_b) projected
-// on the limit surface for the CURRENT lambda_n), and its split-impulse position row.
+// on the limit surface for the CURRENT lambda_n; when that update lands outside, i.e. the
+// contact slides, the update is redone with the isotropic step 1 / k_max so the friction
+// opposes the slip), and its split-impulse position row.
 // Position errors of contacts are removed by split impulses: pseudo-velocities that move the
 // bodies but are forgotten after the step, so stabilisation adds no kinetic energy. Joints use
 // Baumgarte velocity bias. Cost per iteration is linear in the number of rows; nothing is
@@ -79,6 +81,7 @@ class ContactSolver {
     Vec3 ia_n, ib_n, ia_t, ib_t, ia_b, ib_b;  // I^-1 (r x direction)
     double mass_n = 0.0;                      // 1 / K_nn
     Eigen::Matrix2d inv_k_tb;                 // inverse of the tangential 2x2 block
+    double inv_k_slide = 0.0;                 // 1 / largest eigenvalue of that block
     double target_n = 0.0;  // normal velocity target (negative for separated contacts)
     double target_p = 0.0;  // pseudo-velocity target of the split impulse
     double lambda_n = 0.0, lambda_t = 0.0, lambda_b = 0.0, lambda_p = 0.0;
