@@ -1,0 +1,147 @@
+// Running the experiments' scenes and recording them. The catalog of experiments, with the
+// paper's Table 1 rows and the per-experiment measurements, lives in experiment_evaluations.cpp.
+#include "experiment_outcomes.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+#include "asperity/error.hpp"
+#include "asperity/scene/scene.hpp"
+#include "experiment_evaluations.hpp"
+
+namespace asperity::experiments {
+
+double Outcome::value(const std::string& name) const {
+  for (const Measure& m : measures)
+    if (m.name == name) return m.value;
+  throw Error("experiment '" + id + "': no measure named '" + name + "'");
+}
+
+const std::vector<Transform>& Recording::of(const std::string& name) const {
+  for (size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i] == name) return poses[i];
+  throw Error("recording: body '" + name + "' was not recorded");
+}
+
+namespace {
+
+// Sums of the profile fields that Table 1 reports.
+void accumulate(RunProfile& p, const StepProfile& s) {
+  p.contacts += s.contacts;
+  p.fallbacks += s.fallbacks;
+  p.total_ms += s.total_ms;
+  p.patch_ms += s.patch_ms;
+  p.averaging_ms += s.averaging_ms;
+  p.solve_ms += s.solve_ms;
+}
+
+// Sums -> per-step averages.
+void average(RunProfile& p) {
+  const double n = p.steps > 0 ? static_cast<double>(p.steps) : 1.0;
+  p.contacts /= n;
+  p.fallbacks /= n;
+  p.total_ms /= n;
+  p.patch_ms /= n;
+  p.averaging_ms /= n;
+  p.solve_ms /= n;
+}
+
+int64_t stepsFor(double seconds, double dt) {
+  return static_cast<int64_t>(std::ceil(seconds / dt - 1e-9));
+}
+
+// The profile's fixed fields from the scene.
+RunProfile startProfile(const std::string& file, const SceneDesc& scene, double seconds) {
+  RunProfile p;
+  p.scene = std::filesystem::path(file).filename().string();
+  p.sampler = scene.sampler;
+  p.dt = scene.settings.dt;
+  p.mu0 = scene.settings.friction.mu0;
+  p.patch_width = scene.settings.friction.patch_width;
+  p.steps = stepsFor(seconds, scene.settings.dt);
+  return p;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+Recording simulate(const std::string& file, double seconds, const RunOptions& options,
+                   const std::vector<std::string>& bodies, std::optional<FrameMode> frame) {
+  const std::string path = (std::filesystem::path(options.scenes_dir) / file).string();
+  SceneDesc scene = loadScene(path);
+  if (!options.sampler.empty()) scene.sampler = options.sampler;
+  if (frame) scene.settings.frame_mode = *frame;
+  Recording rec;
+  rec.world = instantiate(scene);
+  rec.profile = startProfile(file, scene, seconds);
+  // Which bodies: the named ones (checked), else every dynamic body.
+  std::vector<BodyId> ids;
+  for (const std::string& name : bodies) {
+    const BodyId id = rec.world->findBody(name);
+    if (id == kNoBody) throw Error(path + ": experiment needs a body named '" + name + "'");
+    ids.push_back(id);
+  }
+  if (bodies.empty())
+    for (BodyId id = 0; id < rec.world->bodies().size(); ++id)
+      if (rec.world->body(id).isDynamic()) ids.push_back(id);
+  for (BodyId id : ids) rec.bodies.push_back(rec.world->body(id).name);
+  rec.poses.resize(ids.size());
+  // Sample 0 is the initial state; then every record_every steps and the last step.
+  const int every = std::max(1, options.record_every);
+  auto record = [&] {
+    rec.time.push_back(rec.world->time());
+    for (size_t i = 0; i < ids.size(); ++i) rec.poses[i].push_back(rec.world->body(ids[i]).pose);
+  };
+  record();
+  const auto start = std::chrono::steady_clock::now();
+  for (int64_t i = 1; i <= rec.profile.steps; ++i) {
+    rec.world->step();
+    accumulate(rec.profile, rec.world->profile());
+    if (i % every == 0 || i == rec.profile.steps) record();
+  }
+  rec.profile.wall_s = secondsSince(start);
+  average(rec.profile);
+  return rec;
+}
+
+RunProfile profileScene(const std::string& path, double seconds, const std::string& sampler) {
+  SceneDesc scene = loadScene(path);
+  if (!sampler.empty()) scene.sampler = sampler;
+  std::unique_ptr<World> world = instantiate(scene);
+  RunProfile p = startProfile(path, scene, seconds);
+  const auto start = std::chrono::steady_clock::now();
+  for (int64_t i = 0; i < p.steps; ++i) {
+    world->step();
+    accumulate(p, world->profile());
+  }
+  p.wall_s = secondsSince(start);
+  average(p);
+  return p;
+}
+
+const std::vector<Experiment>& experimentCatalog() {
+  static const std::vector<Experiment> catalog = experimentEntries();
+  return catalog;
+}
+
+const Experiment& findExperiment(const std::string& id) {
+  std::string known;
+  for (const Experiment& e : experimentCatalog()) {
+    if (e.id == id) return e;
+    known += (known.empty() ? "" : ", ") + e.id;
+  }
+  throw Error("unknown experiment '" + id + "' (known: " + known + ")");
+}
+
+Outcome runExperiment(const std::string& id, const RunOptions& options) {
+  const Experiment& e = findExperiment(id);
+  Outcome out = e.run(e, options);
+  out.id = e.id;
+  return out;
+}
+
+}  // namespace asperity::experiments

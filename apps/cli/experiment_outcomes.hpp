@@ -1,0 +1,133 @@
+// The paper's experiments (Sec. 5, SPEC 7) as scenes whose outcomes are measured: each
+// experiment loads its scene files from scenes/, steps them through the scene library
+// (loadScene, instantiate, World::step), records the trajectories that tell its story, and
+// returns the measured numbers with pass or fail and a one-line explanation. `asperity bench`
+// and `asperity report` (apps/cli) and tests/experiments use it; docs/experiments.md lists the
+// experiments, their parameters and outcomes.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "asperity/world/world.hpp"
+
+namespace asperity::experiments {
+
+// One row of the paper's Table 1 (its parameters and its GTX 1650 / i9 timings per step).
+struct PaperRow {
+  double k_a = 0.0;
+  double k_b = 0.0;
+  double mu0 = 0.0;
+  double w = 0.0;      // patch width (m)
+  double dt_ms = 0.0;  // time step (ms)
+  int contacts = 0;    // average number of contacts
+  double total_ms = 0.0;
+  double patch_ms = 0.0;      // contact patch render
+  double averaging_ms = 0.0;  // compute average coefficients
+};
+
+// Per-step averages of StepProfile over one run of one scene.
+struct RunProfile {
+  std::string scene;  // file name
+  std::string sampler;
+  int64_t steps = 0;
+  double dt = 0.0;  // s
+  double mu0 = 0.0;
+  double patch_width = 0.0;  // m
+  double contacts = 0.0;
+  double fallbacks = 0.0;
+  double total_ms = 0.0;
+  double patch_ms = 0.0;
+  double averaging_ms = 0.0;
+  double solve_ms = 0.0;
+  double wall_s = 0.0;
+};
+
+// A curve of a plot: y over x (time, usually).
+struct Series {
+  std::string label;
+  std::vector<double> x;
+  std::vector<double> y;
+};
+
+struct Plot {
+  std::string title;
+  std::string x_label;
+  std::string y_label;
+  std::vector<Series> series;
+};
+
+// A measured number, e.g. {"slide_concrete", 0.62, "m"}.
+struct Measure {
+  std::string name;
+  double value = 0.0;
+  std::string unit;
+};
+
+struct Outcome {
+  std::string id;
+  bool passed = false;
+  std::string explanation;  // one line, with the numbers that decide it
+  std::vector<Measure> measures;
+  std::vector<Plot> plots;
+  std::vector<RunProfile> profiles;  // one per scene run
+  // The measure called `name`; throws asperity::Error when there is none.
+  double value(const std::string& name) const;
+};
+
+struct RunOptions {
+  std::string scenes_dir = "scenes";  // folder holding the experiments' scene files
+  std::string sampler;                // friction sampler override ("" = the scenes')
+  int record_every = 1;               // steps between recorded samples of the plots
+};
+
+// A scene file with the simulated time its outcome needs, and the paper's Table 1 row.
+struct SceneRun {
+  std::string file;  // relative to RunOptions::scenes_dir
+  double seconds = 1.0;
+  std::optional<PaperRow> paper;
+};
+
+struct Experiment {
+  std::string id;        // e.g. "boxes_on_materials"
+  std::string title;     // e.g. "Boxes on four materials"
+  std::string paper;     // what the paper shows (Sec. 5)
+  std::string expected;  // the outcome that is measured and tested
+  std::vector<SceneRun> scenes;
+  std::function<Outcome(const Experiment&, const RunOptions&)> run;
+};
+
+// Every experiment, in the paper's order.
+const std::vector<Experiment>& experimentCatalog();
+// The experiment with this id; throws asperity::Error listing the known ids otherwise.
+const Experiment& findExperiment(const std::string& id);
+// Runs the experiment's scenes and measures its outcome (exceptions: asperity::Error from the
+// scene library, naming the file).
+Outcome runExperiment(const std::string& id, const RunOptions& options = {});
+
+// Trajectories of the named bodies (centre of mass poses), recorded every options.record_every
+// steps, and the run's profile.
+struct Recording {
+  std::vector<double> time;
+  std::vector<std::string> bodies;
+  std::vector<std::vector<Transform>> poses;  // [body][sample]
+  RunProfile profile;
+  std::unique_ptr<World> world;  // the world at the end of the run
+  // Samples of body `name`; throws asperity::Error for a body that was not recorded.
+  const std::vector<Transform>& of(const std::string& name) const;
+};
+
+// Loads scenes_dir/file, applies the sampler override (and frame override when given), runs it
+// for `seconds` and records `bodies` (empty: every dynamic body).
+Recording simulate(const std::string& file, double seconds, const RunOptions& options,
+                   const std::vector<std::string>& bodies = {},
+                   std::optional<FrameMode> frame = std::nullopt);
+
+// Runs one scene for `seconds` (no recording) and returns its per-step profile.
+RunProfile profileScene(const std::string& path, double seconds, const std::string& sampler);
+
+}  // namespace asperity::experiments

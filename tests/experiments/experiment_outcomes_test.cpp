@@ -1,0 +1,107 @@
+// The paper's experiments (SPEC 7): each scene in scenes/ runs headless through the scene
+// library and must show what Sec. 5 shows. Numbers are asserted, not just pass flags.
+#include "experiment_outcomes.hpp"
+
+#include <gtest/gtest.h>
+
+#include "asperity/error.hpp"
+#include "asperity/scene/scene.hpp"
+#include "support/test_support.hpp"
+
+namespace asperity::experiments {
+namespace {
+
+RunOptions options() {
+  RunOptions o;
+  o.scenes_dir = test::sourcePath("scenes");
+  o.record_every = 5;
+  return o;
+}
+
+// Sliding to rest from v0 with mu >= mu0 everywhere cannot go farther than v0^2 / (2 mu0 g).
+constexpr double kBoxSpeed = 2.0;  // m/s, boxes_on_materials.json
+constexpr double kMu0 = 0.2;
+
+TEST(ExperimentCatalog, ListsEveryExperimentWithLoadableScenes) {
+  ASSERT_GE(experimentCatalog().size(), 4u);
+  for (const Experiment& e : experimentCatalog()) {
+    EXPECT_FALSE(e.paper.empty()) << e.id;
+    for (const SceneRun& run : e.scenes) {
+      EXPECT_GT(run.seconds, 0.0) << run.file;
+      EXPECT_NO_THROW(loadScene(test::sourcePath("scenes/" + run.file))) << run.file;
+    }
+  }
+}
+
+TEST(ExperimentCatalog, UnknownIdIsAnErrorNamingTheKnownOnes) {
+  try {
+    findExperiment("boxes_on_marbles");
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("boxes_on_materials"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ExperimentCatalog, MissingSceneFolderIsAnErrorNamingTheFile) {
+  RunOptions o = options();
+  o.scenes_dir = "no/such/folder";
+  try {
+    runExperiment("boxes_on_materials", o);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("boxes_on_materials.json"), std::string::npos);
+  }
+}
+
+// Sec. 5.1: the rougher the plane, the shorter the slide.
+TEST(BoxesOnMaterials, RougherPlanesStopBoxesSooner) {
+  const Outcome out = runExperiment("boxes_on_materials", options());
+  const double concrete = out.value("slide_concrete"), cast_iron = out.value("slide_cast_iron");
+  const double steel = out.value("slide_steel"), plastic = out.value("slide_plastic");
+  EXPECT_LT(concrete, cast_iron);
+  EXPECT_LT(cast_iron, steel);
+  EXPECT_LE(steel, plastic);
+  // Every slide stops within the mu0-only bound; the rough concrete at least 30 % sooner.
+  const double bound = kBoxSpeed * kBoxSpeed / (2.0 * kMu0 * 9.81);
+  EXPECT_LT(plastic, bound);
+  EXPECT_LT(concrete, 0.7 * plastic);
+  EXPECT_TRUE(out.passed) << out.explanation;
+}
+
+// Sec. 5.2, Fig. 12: along the ridges > up the ramps > against the steep faces (stuck).
+TEST(SawtoothPlane, GlidesAlongSlidesUpRampsSticksAgainstSteepFaces) {
+  const Outcome out = runExperiment("sawtooth_plane", options());
+  const double along = out.value("travel_along"), ramp = out.value("travel_ramp");
+  const double steep = out.value("travel_steep");
+  EXPECT_GT(along, ramp);
+  EXPECT_GT(ramp, 0.1);
+  EXPECT_TRUE(steep < 0.05 || out.value("tilt_steep_max") > 30.0) << out.explanation;
+  EXPECT_TRUE(out.passed) << out.explanation;
+}
+
+// Sec. 5.3, Fig. 14: the acrylic cube leaves the stack, the PVC cube moves least.
+TEST(Stacking, AcrylicShootsOutPvcMovesLeastBothDirections) {
+  const Outcome out = runExperiment("stacking", options());
+  for (const std::string dir : {"sideways", "forward"}) {
+    const double acrylic = out.value(dir + "_acrylic"), oak = out.value(dir + "_oak");
+    const double pvc = out.value(dir + "_pvc");
+    EXPECT_GT(acrylic, 0.2) << dir << ": a cube width, clear of the stack";
+    EXPECT_GT(acrylic, oak) << dir;
+    EXPECT_GT(oak, pvc) << dir;
+    EXPECT_LT(pvc, 0.2) << dir << ": still on the stack";
+  }
+  EXPECT_TRUE(out.passed) << out.explanation;
+}
+
+// Sec. 5.2: the worm's centre of mass advances every period; the turned texture reverses it.
+TEST(CrawlingWorm, CrawlsForwardSteadilyAndBackwardWithTurnedTexture) {
+  const Outcome out = runExperiment("crawling_worm", options());
+  EXPECT_GT(out.value("advance_forward"), 0.05);
+  EXPECT_GT(out.value("least_period_forward"), 0.0);
+  EXPECT_LT(out.value("advance_reversed"), -0.05);
+  EXPECT_GT(out.value("least_period_reversed"), 0.0);
+  EXPECT_TRUE(out.passed) << out.explanation;
+}
+
+}  // namespace
+}  // namespace asperity::experiments
