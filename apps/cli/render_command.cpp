@@ -1,0 +1,216 @@
+// `asperity render`: steps a scene headless and renders it through EGL, to an MP4 (ffmpeg), a
+// folder of PNG frames, or one PNG at a given time (--frame-at).
+#include "cli_common.hpp"
+
+#if ASPERITY_HAVE_RENDER
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include "asperity/error.hpp"
+#include "asperity/gl/context.hpp"
+#include "asperity/render/renderer.hpp"
+#include "asperity/render/video_writer.hpp"
+#include "asperity/render/world_view.hpp"
+#include "asperity/scene/friction_registry.hpp"
+#include "asperity/scene/scene.hpp"
+namespace asperity::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RenderCommandOptions {
+  std::string scene;
+  double seconds = 5.0;
+  double fps = 30.0;
+  std::string size = "1280x720";
+  std::string camera;
+  std::string layers = "none";
+  std::string sampler;
+  std::string out;
+  double frame_at = -1.0;
+  int samples = 4;
+};
+
+enum class OutputKind { Video, Frames, Png };
+
+// "WxH" with both in 1..8192.
+void parseSize(const std::string& text, int& width, int& height) {
+  const size_t x = text.find('x');
+  try {
+    size_t used_w = 0, used_h = 0;
+    if (x == std::string::npos) throw std::invalid_argument(text);
+    width = std::stoi(text.substr(0, x), &used_w);
+    height = std::stoi(text.substr(x + 1), &used_h);
+    if (used_w != x || used_h != text.size() - x - 1) throw std::invalid_argument(text);
+  } catch (const std::exception&) {
+    throw Error("render: --size '" + text + "' is not WIDTHxHEIGHT (e.g. 1280x720)");
+  }
+  if (width < 16 || height < 16 || width > 8192 || height > 8192)
+    throw Error("render: --size " + text + ": width and height must be in 16..8192");
+}
+
+// What --out names, checked for writability before any rendering.
+OutputKind prepareOutput(const RenderCommandOptions& o) {
+  const std::string& out = o.out;
+  const fs::path path(out);
+  const bool dir = out.back() == '/' || (fs::exists(path) && fs::is_directory(path));
+  if (o.frame_at >= 0.0) {
+    if (dir || path.extension() != ".png")
+      throw Error("render: --frame-at writes one PNG: --out must end in .png, got '" + out + "'");
+  } else if (!dir && path.extension() != ".mp4") {
+    throw Error("render: --out must be FILE.mp4 or a folder DIR/ for PNG frames, got '" + out +
+                "'");
+  }
+  // Create the folder, then prove a file can be written where the output goes.
+  std::error_code ec;
+  if (dir) fs::create_directories(path, ec);
+  const fs::path probe = dir ? path / ".asperity_write_test" : path;
+  const bool existed = fs::exists(probe);
+  std::ofstream test(probe, std::ios::app);
+  if (!test) throw Error("render: cannot write '" + out + "' (missing folder or no permission)");
+  test.close();
+  if (dir || !existed) fs::remove(probe, ec);
+  if (dir) return OutputKind::Frames;
+  return o.frame_at >= 0.0 ? OutputKind::Png : OutputKind::Video;
+}
+
+// "[#####.....]  42%  frame 63/150" on one line of a terminal's stderr.
+void showProgress(int done, int total) {
+  const int width = 40;
+  const int filled = total > 0 ? done * width / total : width;
+  std::fprintf(stderr, "\r[%s%s] %3d%%  frame %d/%d",
+               std::string(static_cast<size_t>(filled), '#').c_str(),
+               std::string(static_cast<size_t>(width - filled), '.').c_str(),
+               total > 0 ? done * 100 / total : 100, done, total);
+  if (done == total) std::fputc('\n', stderr);
+  std::fflush(stderr);
+}
+
+// Steps until the world's time reaches t (to the nearest step).
+void advanceTo(World& world, double t) {
+  const double dt = world.settings().dt;
+  while (world.time() + 0.5 * dt < t) world.step();
+}
+
+void runRender(const RenderCommandOptions& o) {
+  // Validate everything before loading or rendering anything.
+  int width = 0, height = 0;
+  parseSize(o.size, width, height);
+  if (!std::isfinite(o.fps) || o.fps <= 0.0 || o.fps > 1000.0)
+    throw Error("render: --fps must be in (0, 1000]");
+  if (!std::isfinite(o.seconds) || o.seconds < 0.0) throw Error("render: --seconds must be >= 0");
+  render::WorldViewOptions view_options;
+  view_options.debug.layers = parseDebugLayers(o.layers);
+  // The camera is checked now and placed once the world exists.
+  render::Camera user_camera;
+  if (!o.camera.empty()) user_camera = render::parseCamera(o.camera, "render: --camera");
+  if (o.out.empty()) throw Error("render: --out FILE.mp4, DIR/ or FILE.png is required");
+  const OutputKind kind = prepareOutput(o);
+  if (kind == OutputKind::Video && render::findExecutable("ffmpeg").empty())
+    throw Error("render: " + o.out +
+                ": ffmpeg is not on PATH (install Debian's ffmpeg package, or write PNG frames: "
+                "--out DIR/)");
+
+  // The world, with the chosen friction sampler.
+  SceneDesc scene = loadScene(o.scene);
+  if (!o.sampler.empty()) {
+    makeFrictionProvider(o.sampler);  // throws for an unknown name, listing the known ones
+    scene.sampler = o.sampler;
+  }
+  std::unique_ptr<World> world = instantiate(scene);
+
+  // Headless context and renderer.
+  gl::GlContext context;
+  render::RendererOptions ro;
+  ro.width = width;
+  ro.height = height;
+  ro.samples = o.samples;
+  render::Renderer renderer(ro);
+  render::WorldView view;
+  const render::Camera cam =
+      o.camera.empty() ? view.defaultCamera(*world, double(width) / height) : user_camera;
+  render::RenderScene frame_scene;
+  auto renderAt = [&](double t) {
+    advanceTo(*world, t);
+    view.update(*world, view_options, frame_scene);
+    renderer.render(frame_scene, cam);
+    return renderer.readPixels();
+  };
+
+  // One PNG at --frame-at.
+  if (kind == OutputKind::Png) {
+    render::savePng(renderAt(o.frame_at), o.out);
+    return;
+  }
+  // A frame every 1/fps seconds, t = 0 included.
+  const int frames = static_cast<int>(std::floor(o.seconds * o.fps + 1e-9)) + 1;
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  std::unique_ptr<render::VideoWriter> video;
+  if (kind == OutputKind::Video)
+    video = std::make_unique<render::VideoWriter>(o.out, width, height, o.fps);
+  for (int i = 0; i < frames; ++i) {
+    const render::Image image = renderAt(i / o.fps);
+    if (video) {
+      video->write(image);
+    } else {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%05d.png", i);
+      render::savePng(image, (fs::path(o.out) / name).string());
+    }
+    if (tty) showProgress(i + 1, frames);
+  }
+  if (video) video->finish();
+}
+
+}  // namespace
+
+void registerRenderCommand(CLI::App& app) {
+  auto opt = std::make_shared<RenderCommandOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "render",
+      "Simulate a scene and render it headless (EGL): --out FILE.mp4 (ffmpeg) or DIR/ (PNG "
+      "frames), or one frame with --frame-at T --out FILE.png");
+  sub->add_option("scene", opt->scene, "Scene file (JSON)")->required();
+  sub->add_option("--seconds", opt->seconds, "Simulated time to render (s)")->capture_default_str();
+  sub->add_option("--fps", opt->fps, "Frames per second of simulated time")->capture_default_str();
+  sub->add_option("--size", opt->size, "Image size WIDTHxHEIGHT")->capture_default_str();
+  sub->add_option("--camera", opt->camera,
+                  "eye_x,eye_y,eye_z,target_x,target_y,target_z (m); default frames the bodies");
+  sub->add_option("--layers", opt->layers,
+                  "Debug layers: contacts,frames,cones,patches (or all, none)")
+      ->capture_default_str();
+  sub->add_option("--sampler", opt->sampler, "Friction sampler replacing the scene's");
+  sub->add_option("--samples", opt->samples, "MSAA samples per pixel")
+      ->check(CLI::Range(1, 16))
+      ->capture_default_str();
+  sub->add_option("--frame-at", opt->frame_at,
+                  "Render only the frame at this time (s) into --out FILE.png")
+      ->check(finiteNumber())
+      ->check(CLI::Range(0.0, 1e6));
+  sub->add_option("--out", opt->out, "Output: FILE.mp4, DIR/ or (with --frame-at) FILE.png");
+  sub->callback([opt]() { runRender(*opt); });
+}
+
+}  // namespace asperity::cli
+#else
+#include "asperity/error.hpp"
+
+namespace asperity::cli {
+
+// Built without OpenGL (ASPERITY_WITH_GL=OFF): the subcommand exists and says so.
+void registerRenderCommand(CLI::App& app) {
+  CLI::App* sub = app.add_subcommand("render", "Render a scene (needs a build with OpenGL)");
+  sub->allow_extras();
+  sub->callback([]() {
+    throw Error("render: this asperity was built without OpenGL (ASPERITY_WITH_GL=OFF)");
+  });
+}
+
+}  // namespace asperity::cli
+#endif

@@ -1,0 +1,94 @@
+// Uploads of shape meshes (interleaved vertex attributes) and normal maps.
+#include "render/gpu_cache.hpp"
+
+#include <epoxy/gl.h>
+
+#include <vector>
+
+namespace asperity::render {
+namespace {
+
+// Interleaved layout: position, normal, tangent, bitangent (3 floats each), uv (2 floats).
+constexpr int kFloatsPerVertex = 14;
+
+void uploadMesh(const ShapeMesh& mesh, GpuMesh& gpu) {
+  std::vector<float> data;
+  data.reserve(mesh.positions.size() * kFloatsPerVertex);
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    for (const Vec3f* v :
+         {&mesh.positions[i], &mesh.normals[i], &mesh.tangents[i], &mesh.bitangents[i]})
+      data.insert(data.end(), {v->x(), v->y(), v->z()});
+    const Vec2f uv = i < mesh.uvs.size() ? mesh.uvs[i] : Vec2f::Zero();
+    data.insert(data.end(), {uv.x(), uv.y()});
+  }
+  std::vector<uint32_t> indices;
+  indices.reserve(mesh.triangles.size() * 3);
+  for (const auto& t : mesh.triangles)
+    for (int v : t) indices.push_back(static_cast<uint32_t>(v));
+
+  glBindVertexArray(gpu.vao);
+  glBindBuffer(GL_ARRAY_BUFFER, gpu.vertices);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(data.size() * sizeof(float)), data.data(),
+               GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices);
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(uint32_t)),
+               indices.data(), GL_STATIC_DRAW);
+  // Attribute locations match shaders::kMeshVertex.
+  const GLsizei stride = kFloatsPerVertex * sizeof(float);
+  const GLint sizes[5] = {3, 3, 3, 3, 2};
+  size_t offset = 0;
+  for (GLuint a = 0; a < 5; ++a) {
+    glEnableVertexAttribArray(a);
+    glVertexAttribPointer(a, sizes[a], GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(offset * sizeof(float)));
+    offset += static_cast<size_t>(sizes[a]);
+  }
+  glBindVertexArray(0);
+  gpu.index_count = static_cast<GLsizei>(indices.size());
+}
+
+}  // namespace
+
+const GpuMesh& MeshCache::get(const std::shared_ptr<const ShapeMesh>& mesh) {
+  auto it = entries_.find(mesh.get());
+  // A dead weak pointer means the address was reused by a new mesh: upload again.
+  if (it != entries_.end() && it->second.source.lock() == mesh) return it->second.gpu;
+  if (it != entries_.end()) entries_.erase(it);
+  Entry& entry = entries_[mesh.get()];
+  entry.source = mesh;
+  uploadMesh(*mesh, entry.gpu);
+  return entry.gpu;
+}
+
+void MeshCache::prune() {
+  std::erase_if(entries_, [](const auto& e) { return e.second.source.expired(); });
+}
+
+GLuint TextureCache::get(const std::shared_ptr<const NormalMap>& map) {
+  auto it = entries_.find(map.get());
+  if (it != entries_.end() && it->second.source.lock() == map) return it->second.texture;
+  if (it != entries_.end()) entries_.erase(it);
+  Entry& entry = entries_[map.get()];
+  entry.source = map;
+  // Unit vectors as floats; mipmaps average them (the shader renormalises).
+  glBindTexture(GL_TEXTURE_2D, entry.texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16F, map->width(), map->height(), 0, GL_RGB, GL_FLOAT,
+               map->texels().data());
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  // Anisotropic filtering keeps grazing views of rough ground sharp.
+  if (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0f);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return entry.texture;
+}
+
+void TextureCache::prune() {
+  std::erase_if(entries_, [](const auto& e) { return e.second.source.expired(); });
+}
+
+}  // namespace asperity::render

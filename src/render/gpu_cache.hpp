@@ -1,0 +1,49 @@
+// GPU copies of shape meshes and normal maps, uploaded once and kept while the CPU object
+// lives (keyed by address, checked through a weak pointer so a reused address re-uploads).
+#pragma once
+
+#include <memory>
+#include <unordered_map>
+
+#include "asperity/geometry/shape_mesh.hpp"
+#include "asperity/gl/objects.hpp"
+#include "asperity/texture/normal_map.hpp"
+
+namespace asperity::render {
+
+struct GpuMesh {
+  gl::VertexArray vao;
+  gl::Buffer vertices;
+  gl::Buffer indices;
+  GLsizei index_count = 0;
+};
+
+class MeshCache {
+ public:
+  const GpuMesh& get(const std::shared_ptr<const ShapeMesh>& mesh);
+  // Drops entries whose mesh no longer exists.
+  void prune();
+
+ private:
+  struct Entry {
+    std::weak_ptr<const ShapeMesh> source;
+    GpuMesh gpu;
+  };
+  std::unordered_map<const ShapeMesh*, Entry> entries_;
+};
+
+class TextureCache {
+ public:
+  // A mipmapped, repeating RGB16F texture of the map's unit vectors (rows bottom-up as stored).
+  GLuint get(const std::shared_ptr<const NormalMap>& map);
+  void prune();
+
+ private:
+  struct Entry {
+    std::weak_ptr<const NormalMap> source;
+    gl::Texture texture;
+  };
+  std::unordered_map<const NormalMap*, Entry> entries_;
+};
+
+}  // namespace asperity::render
