@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <sstream>
 
 #include "asperity/error.hpp"
 
@@ -18,8 +19,21 @@ void printError(const std::string& message) {
   std::cerr << "asperity: error: " << line << '\n';
 }
 
+namespace {
+// CLI11 reports `asperity frobnicate` as a missing subcommand; name the word instead.
+void checkSubcommandName(const CLI::App& app, int argc, const char* const* argv) {
+  if (argc < 2 || argv[1][0] == '-') return;
+  const std::string word = argv[1];
+  const auto matching = app.get_subcommands([&](const CLI::App* s) { return s->check_name(word); });
+  if (matching.empty())
+    throw CLI::ExtrasError("unknown subcommand '" + word + "' (see asperity --help)",
+                           CLI::ExitCodes::ExtrasError);
+}
+}  // namespace
+
 int runCli(CLI::App& app, int argc, const char* const* argv) {
   try {
+    checkSubcommandName(app, argc, argv);
     app.parse(argc, argv);
     return 0;
   } catch (const CLI::CallForHelp& e) {
@@ -74,6 +88,21 @@ CLI::Validator positiveNumber() {
         return {};
       },
       "POSITIVE");
+}
+
+CLI::Validator numberInRange(double min, double max) {
+  std::ostringstream range;
+  range << "[" << min << ", " << max << "]";
+  return CLI::Validator(
+      [min, max, bounds = range.str()](std::string& text) -> std::string {
+        double value = 0.0;
+        if (!parseDouble(text, value)) return {};
+        // NaN fails both comparisons, so test it explicitly.
+        if (!std::isfinite(value) || value < min || value > max)
+          return "value " + text + " is not a finite number in " + bounds;
+        return {};
+      },
+      "NUMBER in " + range.str());
 }
 
 }  // namespace asperity::cli

@@ -21,10 +21,13 @@ void registerConeCommand(CLI::App& app);
 int runCli(CLI::App& app, int argc, const char* const* argv);
 
 // Rejects NaN and infinities (CLI::Range lets NaN through). Use before a CLI::Range check:
-//   app.add_option("--mu-max", x)->check(finiteNumber())->check(CLI::Range(0.0, 1e3));
+//   app.add_option("--mu0", x)->check(finiteNumber())->check(CLI::Range(0.0, 1e3));
+// or, in one check, ->check(numberInRange(0.0, 1e3)).
 CLI::Validator finiteNumber();
 // Accepts finite numbers > 0.
 CLI::Validator positiveNumber();
+// Accepts finite numbers in [min, max] (NaN rejected), with a message naming the bounds.
+CLI::Validator numberInRange(double min, double max);
 
 // Prints `asperity: error: <message>` as one line on stderr (newlines become spaces).
 void printError(const std::string& message);

@@ -24,8 +24,8 @@ constexpr double kThumbX = 24.0;
 constexpr double kThumbBY = 92.0;
 constexpr double kThumbAY = 268.0;
 constexpr double kPolarCx = 382.0;
-constexpr double kPolarCy = 246.0;
-constexpr double kPolarRadius = 150.0;  // pixels for the outermost tick
+constexpr double kPolarCy = 240.0;
+constexpr double kPolarRadius = 140.0;  // pixels for the outermost tick
 constexpr double kLegendX = 590.0;
 
 // Colours: polygon blue, box red (colour-blind safe pair), greys for axes and grid.
@@ -92,6 +92,7 @@ SurfacePtr thumbnail(const NormalMap& map, int side) {
 
 // One labelled thumbnail, or a grey square for a flat (absent) surface.
 void drawThumbnail(cairo_t* cr, const NormalMap* map, const std::string& label, double y) {
+  cairo_set_source_rgb(cr, 0.05, 0.05, 0.05);
   text(cr, label, kThumbX, y - 8.0, 13.0, Align::Left, true);
   if (map != nullptr && !map->empty()) {
     SurfacePtr thumb = thumbnail(*map, static_cast<int>(kThumb));
@@ -168,7 +169,7 @@ void drawAxes(cairo_t* cr, double step, int ticks) {
   cairo_fill(cr);
   text(cr, "t", kPolarCx + len + 10.0, kPolarCy + 5.0, 16.0, Align::Left, true, true);
   text(cr, "b", kPolarCx + 8.0, kPolarCy - len - 2.0, 16.0, Align::Left, true, true);
-  // Ticks and labels on both axes, both signs (mu is dimensionless).
+  // Tick marks on both axes, both signs (mu is dimensionless); labels come last.
   for (int i = -ticks; i <= ticks; ++i) {
     if (i == 0) continue;
     const double off = i * step * s;
@@ -177,9 +178,34 @@ void drawAxes(cairo_t* cr, double step, int ticks) {
     cairo_move_to(cr, kPolarCx - 4.0, kPolarCy - off);
     cairo_line_to(cr, kPolarCx + 4.0, kPolarCy - off);
     cairo_stroke(cr);
+  }
+}
+
+// A tick label over a translucent white patch, so lines under it do not hide it.
+void haloLabel(cairo_t* cr, const std::string& s, double x, double y, Align align) {
+  cairo_select_font_face(cr, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, 12.0);
+  cairo_text_extents_t ext;
+  cairo_text_extents(cr, s.c_str(), &ext);
+  const double left = align == Align::Center  ? x - ext.x_advance / 2.0
+                      : align == Align::Right ? x - ext.x_advance
+                                              : x;
+  cairo_set_source_rgba(cr, 1.0, 1.0, 1.0, 0.75);
+  cairo_rectangle(cr, left - 2.0, y + ext.y_bearing - 1.0, ext.x_advance + 4.0, ext.height + 2.0);
+  cairo_fill(cr);
+  cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+  text(cr, s, x, y, 12.0, align);
+}
+
+// Numeric tick labels on both axes (drawn last, above the polygon and the box).
+void drawTickLabels(cairo_t* cr, double step, int ticks) {
+  const double s = kPolarRadius / (step * ticks);
+  for (int i = -ticks; i <= ticks; ++i) {
+    if (i == 0) continue;
+    const double off = i * step * s;
     const std::string label = tickLabel(i * step, step);
-    text(cr, label, kPolarCx + off, kPolarCy + 18.0, 12.0, Align::Center);
-    text(cr, label, kPolarCx - 7.0, kPolarCy - off + 4.0, 12.0, Align::Right);
+    haloLabel(cr, label, kPolarCx + off, kPolarCy + 18.0, Align::Center);
+    haloLabel(cr, label, kPolarCx - 7.0, kPolarCy - off + 4.0, Align::Right);
   }
 }
 
@@ -251,6 +277,8 @@ void drawLegend(cairo_t* cr, const ConePlot& plot) {
     std::snprintf(buf, sizeof(buf), "%s = %.4f", rows[i].first, rows[i].second);
     text(cr, buf, x + 38.0, y + 70.0 + 20.0 * i, 13.0, Align::Left);
   }
+  text(cr, "axes: mu along t and b (dimensionless)", x, y + 165.0, 12.0, Align::Left);
+  text(cr, "directions from t toward b", x, y + 183.0, 12.0, Align::Left);
 }
 
 // The one drawing routine behind both outputs.
@@ -273,6 +301,7 @@ void drawConePlot(cairo_t* cr, const ConePlot& plot) {
   drawAxes(cr, step, ticks);
   drawPolygon(cr, plot.mu, s);
   drawBox(cr, plot.box, s);
+  drawTickLabels(cr, step, ticks);
   drawLegend(cr, plot);
 }
 

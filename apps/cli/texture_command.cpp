@@ -70,11 +70,10 @@ void runTexture(const TextureOptions& opt, const std::vector<std::string>& extra
   }
   if (opt.generator.empty())
     throw Error("texture: missing GENERATOR (see `asperity texture --list`)");
-  if (opt.out.empty()) throw Error("texture: --out FILE.png is required");
-
   GeneratorSpec spec;
   spec.name = opt.generator;
   spec.params = parseGeneratorParams(extras);
+  if (opt.out.empty()) throw Error("texture: --out FILE.png is required");
   spec.size = opt.size;
   spec.seed = opt.seed;
   const NormalMap map = generateNormalMap(spec);
