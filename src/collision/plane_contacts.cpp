@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace asperity::collision_detail {
 
@@ -33,13 +34,19 @@ std::vector<Vec3> candidates(const Shape& shape, const Transform& world, const V
       const Vec3 across = n - n.dot(axis) * axis;
       for (double s : {-1.0, 1.0}) {
         const double r = shape.radius;
+        const size_t first = out.size();
         for (const Vec2& d : {Vec2(r, 0), Vec2(0, r), Vec2(-r, 0), Vec2(0, -r)}) {
           out.push_back(world.apply(Vec3(d.x(), d.y(), s * shape.half_height)));
         }
-        // (Standing upright, the rim is level and the four points suffice.)
-        if (across.norm() > 1e-9) {
-          out.push_back(world.apply(Vec3(0, 0, s * shape.half_height)) - r * across.normalized());
-        }
+        // (Standing upright the rim is level and the four points suffice; a lowest point
+        // that is one of the four is not repeated.)
+        if (across.norm() < 1e-9) continue;
+        const Vec3 lowest =
+            world.apply(Vec3(0, 0, s * shape.half_height)) - r * across.normalized();
+        const bool repeated =
+            std::any_of(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(),
+                        [&](const Vec3& p) { return (p - lowest).norm() < 1e-9 * r; });
+        if (!repeated) out.push_back(lowest);
       }
       break;
     }

@@ -328,5 +328,53 @@ TEST(CollisionDetector, ReportGapsGivesNegativePhiWithinMargin) {
   EXPECT_TRUE(near(contacts[0].phi, -0.004, 0, 1e-7));
 }
 
+// An M4-sized square nut (7 mm across, 2 mm bore half width) on a static square bolt.
+std::vector<Body> nutOnBolt(double shift_x) {
+  const auto nut = squareNutMesh(0.0035, 0.002, 0.0016);
+  const auto bolt = boxMesh(Vec3(0.0018, 0.0018, 0.01));
+  return {meshBody(bolt, BodyType::Static, Vec3::Zero()),
+          meshBody(nut, BodyType::Dynamic, Vec3(shift_x, 0, 0.002))};
+}
+
+TEST(CollisionDetector, NutOnBoltUsesSignedDistance) {
+  // Centred, the bore clears the bolt by 0.2 mm: no contact (its hull would fill the bore).
+  EXPECT_TRUE(detectOnce(nutOnBolt(0.0), {}).empty());
+  // Shifted by 0.25 mm, the bore's -x wall sinks 50 um into the bolt's -x face.
+  const auto shifted = nutOnBolt(0.00025);
+  const auto contacts = detectOnce(shifted, {});
+  ASSERT_FALSE(contacts.empty());
+  int face_contacts = 0;
+  for (const Contact& c : contacts) {
+    // The nut (dynamic) is A; n from the bolt toward the nut is -x (diagonal at the bolt's
+    // vertical edges, where the two faces are equally near).
+    EXPECT_EQ(c.body_a, 1u);
+    EXPECT_LT(c.normal.x(), -0.7) << c.normal.transpose();
+    EXPECT_GE(c.phi, 0.0);
+    EXPECT_LE(c.phi, 5e-5 + 1e-7);
+    EXPECT_TRUE(near(c.witness_a.x(), -0.00175, 0, 1e-7));
+    EXPECT_TRUE(near(c.witness_b.x(), -0.0018, 0, 5e-5));
+    EXPECT_GE(c.feature_a, 0);
+    EXPECT_GE(c.feature_b, 0);
+    // Away from the edges: the exact depth and normal.
+    if (std::abs(c.point.y()) < 0.001) {
+      ++face_contacts;
+      EXPECT_TRUE(near(c.phi, 5e-5, 0, 1e-7));
+      EXPECT_TRUE(near(c.normal.x(), -1.0, 0, 1e-6));
+      EXPECT_TRUE(near(c.witness_b.x(), -0.0018, 0, 1e-7));
+    }
+  }
+  EXPECT_GE(face_contacts, 4);
+}
+
+TEST(CollisionDetector, SignedDistanceKeysPersist) {
+  const auto bodies = nutOnBolt(0.00025);
+  CollisionDetector detector;
+  detector.setBodies(bodies, {});
+  const std::vector<Contact> first = detector.detect(bodies);
+  const std::vector<Contact> second = detector.detect(bodies);
+  ASSERT_EQ(first.size(), second.size());
+  for (size_t i = 0; i < first.size(); ++i) EXPECT_EQ(first[i].key, second[i].key);
+}
+
 }  // namespace
 }  // namespace asperity
