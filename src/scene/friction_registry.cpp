@@ -8,6 +8,7 @@
 #include "asperity/error.hpp"
 #include "asperity/sampler/cone_provider.hpp"
 #include "asperity/sampler/constant_provider.hpp"
+#include "asperity/sampler/cpu_patch_sampler.hpp"
 
 namespace asperity {
 
@@ -18,6 +19,7 @@ struct Registry {
   Registry() {
     factories["constant"] = [] { return std::make_unique<ConstantProvider>(); };
     factories["cone"] = [] { return std::make_unique<ConeProvider>(); };
+    factories["cpu"] = [] { return std::make_unique<CpuPatchSampler>(); };
   }
   std::mutex mutex;
   std::map<std::string, FrictionProviderFactory> factories;

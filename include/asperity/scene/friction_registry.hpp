@@ -1,6 +1,6 @@
 // Friction providers by name, for scene files ("settings": {"sampler": "cone"}) and the CLI.
-// Built in: "constant" and "cone". Others (the patch samplers) register a factory once before
-// scenes are instantiated, e.g. the OpenGL target from a function the front end calls.
+// Built in: "constant", "cone" and "cpu" (the CPU patch sampler). Others (the OpenGL sampler)
+// register a factory once before scenes are instantiated, from a function the front end calls.
 #pragma once
 
 #include <functional>

@@ -1,0 +1,263 @@
+// `asperity run SCENE.json`: load a scene, step it, and write the trajectory (CSV), per-step
+// statistics (JSON) and the final state hash. Deterministic: the same scene and binary give a
+// byte-identical CSV.
+#include <unistd.h>
+
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "asperity/error.hpp"
+#include "asperity/scene/friction_registry.hpp"
+#include "asperity/scene/scene.hpp"
+#include "cli_common.hpp"
+
+namespace asperity::cli {
+namespace {
+
+struct RunOptions {
+  std::string scene;
+  std::optional<int64_t> steps;
+  std::optional<double> seconds;
+  std::string out;
+  int64_t every = 1;
+  std::string stats;
+  std::string friction;  // empty: the scene's
+  std::string frame;
+  std::string sampler;
+  bool hash = false;
+};
+
+const std::map<std::string, LimitSurfaceKind> kFrictionNames = {
+    {"coulomb", LimitSurfaceKind::Coulomb},
+    {"box", LimitSurfaceKind::Box},
+    {"polygon", LimitSurfaceKind::Polygon}};
+const std::map<std::string, FrameMode> kFrameNames = {{"world", FrameMode::World},
+                                                      {"body", FrameMode::Body},
+                                                      {"auto", FrameMode::Auto},
+                                                      {"texture", FrameMode::Texture}};
+
+// Appends the shortest text that reads back to the same double.
+void appendNumber(std::string& line, double x) {
+  char buffer[32];
+  const auto r = std::to_chars(buffer, buffer + sizeof(buffer), x);
+  line.append(buffer, r.ptr);
+}
+
+// One CSV row per body: the pose of the body frame written in the scene (not the centre of
+// mass), the velocity of that frame's origin, and the angular velocity (world frame).
+void appendRows(std::string& text, const World& world, int64_t step) {
+  for (const Body& b : world.bodies()) {
+    const Transform pose = b.descriptionPose();
+    const Vec3 v = b.linear_velocity + b.angular_velocity.cross(pose.position - b.pose.position);
+    text += std::to_string(step);
+    text += ',';
+    appendNumber(text, world.time());
+    text += ',' + b.name;
+    const double values[] = {pose.position.x(),
+                             pose.position.y(),
+                             pose.position.z(),
+                             pose.rotation.w(),
+                             pose.rotation.x(),
+                             pose.rotation.y(),
+                             pose.rotation.z(),
+                             v.x(),
+                             v.y(),
+                             v.z(),
+                             b.angular_velocity.x(),
+                             b.angular_velocity.y(),
+                             b.angular_velocity.z()};
+    for (double x : values) {
+      text += ',';
+      appendNumber(text, x);
+    }
+    text += '\n';
+  }
+}
+
+// Sums of StepProfile fields over the run, for --stats.
+struct ProfileSums {
+  StepProfile sum;
+  int max_contacts = 0;
+  void add(const StepProfile& p) {
+    sum.drivers_ms += p.drivers_ms;
+    sum.collide_ms += p.collide_ms;
+    sum.frames_ms += p.frames_ms;
+    sum.friction_ms += p.friction_ms;
+    sum.patch_ms += p.patch_ms;
+    sum.averaging_ms += p.averaging_ms;
+    sum.solve_ms += p.solve_ms;
+    sum.integrate_ms += p.integrate_ms;
+    sum.total_ms += p.total_ms;
+    sum.contacts += p.contacts;
+    sum.fallbacks += p.fallbacks;
+    max_contacts = std::max(max_contacts, p.contacts);
+  }
+};
+
+nlohmann::ordered_json statsJson(const RunOptions& opt, const SceneDesc& scene, const World& world,
+                                 const ProfileSums& sums, int64_t steps, double wall_s) {
+  const double n = steps > 0 ? static_cast<double>(steps) : 1.0;
+  const StepProfile& s = sums.sum;
+  nlohmann::ordered_json j;
+  j["scene"] = opt.scene;
+  j["steps"] = steps;
+  j["dt"] = world.settings().dt;
+  j["simulated_time"] = world.time();
+  j["wall_time_s"] = wall_s;
+  j["bodies"] = world.bodies().size();
+  j["sampler"] = scene.sampler;
+  // Per-step averages (ms for the stages, as StepProfile).
+  j["per_step"] = {{"contacts", s.contacts / n},     {"fallbacks", s.fallbacks / n},
+                   {"drivers_ms", s.drivers_ms / n}, {"collide_ms", s.collide_ms / n},
+                   {"frames_ms", s.frames_ms / n},   {"friction_ms", s.friction_ms / n},
+                   {"patch_ms", s.patch_ms / n},     {"averaging_ms", s.averaging_ms / n},
+                   {"solve_ms", s.solve_ms / n},     {"integrate_ms", s.integrate_ms / n},
+                   {"total_ms", s.total_ms / n}};
+  j["max_contacts"] = sums.max_contacts;
+  char hash[17];
+  std::snprintf(hash, sizeof(hash), "%016llx", static_cast<unsigned long long>(world.stateHash()));
+  j["state_hash"] = hash;
+  return j;
+}
+
+// A bar on stderr, only for a terminal and only once the run has taken a second.
+class Progress {
+ public:
+  explicit Progress(int64_t total) : total_(total), enabled_(::isatty(STDERR_FILENO) == 1) {}
+  void update(int64_t done) {
+    if (!enabled_) return;
+    const double elapsed = seconds();
+    if (elapsed < 1.0 || elapsed - last_ < 0.1) return;
+    last_ = elapsed;
+    const int width = 40;
+    const int filled = static_cast<int>(width * done / std::max<int64_t>(total_, 1));
+    std::fprintf(stderr, "\r[%s%s] %3d%%  step %lld/%lld", std::string(filled, '#').c_str(),
+                 std::string(width - filled, ' ').c_str(),
+                 static_cast<int>(100 * done / std::max<int64_t>(total_, 1)),
+                 static_cast<long long>(done), static_cast<long long>(total_));
+    shown_ = true;
+  }
+  void finish() {
+    if (shown_) std::fprintf(stderr, "\r%s\r", std::string(72, ' ').c_str());
+  }
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  int64_t total_;
+  bool enabled_;
+  bool shown_ = false;
+  double last_ = 0.0;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+// The scene with the command line's overrides applied.
+SceneDesc loadWithOverrides(const RunOptions& opt) {
+  SceneDesc scene = loadScene(opt.scene);
+  if (!opt.friction.empty()) scene.settings.limit_surface = kFrictionNames.at(opt.friction);
+  if (!opt.frame.empty()) scene.settings.frame_mode = kFrameNames.at(opt.frame);
+  if (!opt.sampler.empty()) {
+    if (!hasFrictionProvider(opt.sampler)) {
+      try {
+        makeFrictionProvider(opt.sampler);
+      } catch (const Error& e) {
+        throw Error(std::string("--sampler: ") + e.what());
+      }
+    }
+    scene.sampler = opt.sampler;
+  }
+  return scene;
+}
+
+// Number of steps: --steps, else ceil(--seconds / dt), else one simulated second.
+int64_t stepCount(const RunOptions& opt, double dt) {
+  if (opt.steps) return *opt.steps;
+  const double seconds = opt.seconds ? *opt.seconds : 1.0;
+  const double n = std::ceil(seconds / dt - 1e-9);
+  if (!(n <= 1e9)) throw Error("--seconds: more than 1e9 steps of " + std::to_string(dt) + " s");
+  return static_cast<int64_t>(n);
+}
+
+void writeFile(const std::string& path, const std::string& text, const char* what) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw Error(std::string(what) + ": cannot open \"" + path + "\" for writing");
+  out << text;
+  if (!out) throw Error(std::string(what) + ": write to \"" + path + "\" failed");
+}
+
+void runScene(const RunOptions& opt) {
+  const SceneDesc scene = loadWithOverrides(opt);
+  std::unique_ptr<World> world = instantiate(scene);
+  const int64_t steps = stepCount(opt, scene.settings.dt);
+  // Step 0 is the initial state; then every K steps.
+  std::string csv = "step,time,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n";
+  const bool trajectory = !opt.out.empty();
+  if (trajectory) appendRows(csv, *world, 0);
+  ProfileSums sums;
+  Progress progress(steps);
+  for (int64_t i = 1; i <= steps; ++i) {
+    world->step();
+    sums.add(world->profile());
+    if (trajectory && i % opt.every == 0) appendRows(csv, *world, i);
+    progress.update(i);
+  }
+  progress.finish();
+  const double wall_s = progress.seconds();
+  // Outputs: the trajectory, the statistics, and the hash or a one-line summary on stdout.
+  if (trajectory) writeFile(opt.out, csv, "--out");
+  if (!opt.stats.empty())
+    writeFile(opt.stats, statsJson(opt, scene, *world, sums, steps, wall_s).dump(2) + "\n",
+              "--stats");
+  if (opt.hash) {
+    std::printf("%016llx\n", static_cast<unsigned long long>(world->stateHash()));
+  } else {
+    std::printf("%s: %lld steps, %g s simulated, %zu bodies, %.3f s wall, %.3f ms/step\n",
+                opt.scene.c_str(), static_cast<long long>(steps), world->time(),
+                world->bodies().size(), wall_s,
+                steps > 0 ? sums.sum.total_ms / static_cast<double>(steps) : 0.0);
+  }
+}
+
+}  // namespace
+
+void registerRunCommand(CLI::App& app) {
+  auto opt = std::make_shared<RunOptions>();
+  CLI::App* sub = app.add_subcommand("run", "Simulate a scene file; write trajectory and stats");
+  sub->add_option("SCENE", opt->scene, "Scene file (JSON, docs/scene-format.md)")->required();
+
+  // How long.
+  auto* steps = sub->add_option("--steps", opt->steps, "Number of steps")
+                    ->check(CLI::Range(int64_t{0}, int64_t{1000000000}));
+  auto* seconds = sub->add_option("--seconds", opt->seconds,
+                                  "Simulated time (s); default 1 s when --steps is not given")
+                      ->check(positiveNumber());
+  steps->excludes(seconds);
+
+  // Outputs.
+  sub->add_option("--out", opt->out, "Trajectory CSV: step,time,body,x,y,z,qw,qx,qy,qz,v,w");
+  sub->add_option("--every", opt->every, "Record every K-th step in the CSV")
+      ->check(CLI::Range(int64_t{1}, int64_t{1000000000}))
+      ->capture_default_str();
+  sub->add_option("--stats", opt->stats, "Per-step averages (contacts, stage times) as JSON");
+  sub->add_flag("--hash", opt->hash, "Print the final state hash (16 hex digits)");
+
+  // Overrides of the scene's settings.
+  sub->add_option("--friction", opt->friction, "Limit surface: coulomb, box or polygon")
+      ->check(CLI::IsMember({"coulomb", "box", "polygon"}));
+  sub->add_option("--frame", opt->frame, "Contact frame: world, body, auto or texture")
+      ->check(CLI::IsMember({"world", "body", "auto", "texture"}));
+  sub->add_option("--sampler", opt->sampler, "Friction sampler (constant, cone, cpu, ...)");
+
+  sub->callback([opt] { runScene(*opt); });
+}
+
+}  // namespace asperity::cli
