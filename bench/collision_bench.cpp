@@ -1,0 +1,97 @@
+// Collision stage timings: CollisionDetector::detect on resting scenes (persistent manifolds
+// warm, as in a running simulation). Counters: contacts per call.
+#include <benchmark/benchmark.h>
+
+#include <random>
+#include <vector>
+
+#include "asperity/collision/collision_detector.hpp"
+
+namespace asperity {
+namespace {
+
+Body cube(const Vec3& position, const Quat& rotation, double half) {
+  Body body;
+  body.type = BodyType::Dynamic;
+  body.pose = {position, rotation};
+  body.inverse_mass = 1.0;
+  Shape box;
+  box.type = ShapeType::Box;
+  box.half_extents = Vec3::Constant(half);
+  body.shapes.push_back(box);
+  return body;
+}
+
+Body ground() {
+  Body body;
+  body.type = BodyType::Static;
+  Shape plane;
+  plane.type = ShapeType::Plane;
+  body.shapes.push_back(plane);
+  return body;
+}
+
+// Three stacks of ten 0.2 m cubes (the paper's stacking scene), each resting 1 mm deep.
+std::vector<Body> threeStacks() {
+  std::vector<Body> bodies = {ground()};
+  for (int s = 0; s < 3; ++s) {
+    for (int level = 0; level < 10; ++level) {
+      const Vec3 at(0.5 * s, 0.0, 0.1 - 0.001 + level * 0.199);
+      bodies.push_back(cube(at, Quat(Eigen::AngleAxisd(0.05 * level, Vec3::UnitZ())), 0.1));
+    }
+  }
+  return bodies;
+}
+
+// A pile of 1000 cubes: 10 x 10 columns of 10 resting cubes (1 mm deep), each cube jittered
+// sideways and turned about z, neighbouring columns a few millimetres apart.
+std::vector<Body> pile() {
+  std::vector<Body> bodies = {ground()};
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> jitter(-0.005, 0.005), angle(-0.05, 0.05);
+  for (int j = 0; j < 10; ++j) {
+    for (int i = 0; i < 10; ++i) {
+      for (int level = 0; level < 10; ++level) {
+        const Vec3 at(0.23 * i + jitter(rng), 0.23 * j + jitter(rng), 0.099 + 0.199 * level);
+        bodies.push_back(cube(at, Quat(Eigen::AngleAxisd(angle(rng), Vec3::UnitZ())), 0.1));
+      }
+    }
+  }
+  return bodies;
+}
+
+void runDetect(benchmark::State& state, const std::vector<Body>& bodies) {
+  CollisionDetector detector;
+  detector.setBodies(bodies, {});
+  detector.detect(bodies);  // warm the persistent manifolds
+  size_t contacts = 0;
+  for (auto _ : state) {
+    contacts = detector.detect(bodies).size();
+    benchmark::DoNotOptimize(contacts);
+  }
+  state.counters["contacts"] = static_cast<double>(contacts);
+  state.counters["bodies"] = static_cast<double>(bodies.size());
+}
+
+void BM_DetectThreeStacks(benchmark::State& state) {
+  runDetect(state, threeStacks());
+}
+BENCHMARK(BM_DetectThreeStacks)->Unit(benchmark::kMicrosecond);
+
+void BM_DetectPile1000(benchmark::State& state) {
+  runDetect(state, pile());
+}
+BENCHMARK(BM_DetectPile1000)->Unit(benchmark::kMillisecond);
+
+// Rebuilding every collision object (what adding or removing a body costs).
+void BM_SetBodiesPile1000(benchmark::State& state) {
+  const std::vector<Body> bodies = pile();
+  CollisionDetector detector;
+  for (auto _ : state) detector.setBodies(bodies, {});
+  state.counters["bodies"] = static_cast<double>(bodies.size());
+}
+BENCHMARK(BM_SetBodiesPile1000)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace asperity
+BENCHMARK_MAIN();
