@@ -29,7 +29,8 @@ struct CpuPatchSampler::State {
   patch::MeshCache meshes;
   patch::GeometryScratch geometry;
   std::array<patch::SurfaceRaster, 2> raster;  // A, B
-  std::vector<int32_t> in_patch;
+  std::vector<uint32_t> in_patch;              // P as Volume::pack(i, j)
+  patch::ShadeScratch shade;
   std::vector<float> gx, gy;
   std::vector<Vec2> directions;
   std::array<std::array<double, kMaxDirections>, 2> sums{};
@@ -69,10 +70,20 @@ void CpuPatchSampler::State::rasterise(const patch::Volume& volume,
                             patch::shapePose(*range.body, k), meshes, geometry, r);
     }
   }
-  in_patch.clear();
-  for (int p = 0; p < pixels; ++p) {
-    if (raster[0].covered(p) && raster[1].covered(p)) in_patch.push_back(p);
+  // Branch-free append into a buffer of R x R entries.
+  in_patch.resize(static_cast<size_t>(pixels));
+  size_t count = 0;
+  const float* key_a = raster[0].key.data();
+  const float* key_b = raster[1].key.data();
+  for (int j = 0; j < volume.resolution; ++j) {
+    for (int i = 0; i < volume.resolution; ++i) {
+      const int p = j * volume.resolution + i;
+      in_patch[count] = patch::Volume::pack(i, j);
+      count += static_cast<size_t>(key_a[p] > patch::SurfaceRaster::kEmpty) &
+               static_cast<size_t>(key_b[p] > patch::SurfaceRaster::kEmpty);
+    }
   }
+  in_patch.resize(count);
 }
 
 void CpuPatchSampler::State::fillImages(const patch::Volume& volume,
@@ -83,7 +94,9 @@ void CpuPatchSampler::State::fillImages(const patch::Volume& volume,
   images.resolution = volume.resolution;
   images.directions = settings.directions;
   images.in_patch.assign(static_cast<size_t>(pixels), 0);
-  for (int32_t p : in_patch) images.in_patch[static_cast<size_t>(p)] = 1;
+  for (uint32_t p : in_patch) {
+    images.in_patch[(p >> 16) * static_cast<uint32_t>(volume.resolution) + (p & 0xffffu)] = 1;
+  }
   for (size_t s = 0; s < 2; ++s) {
     images.covered[s].assign(static_cast<size_t>(pixels), 0);
     images.normals[s].assign(static_cast<size_t>(pixels), Vec3f::Zero());
@@ -114,8 +127,8 @@ void CpuPatchSampler::State::sample(std::span<const Body> bodies, Contact& conta
   const size_t count = in_patch.size();
   const size_t n = directions.size();
   for (size_t s = 0; s < 2 && count > 0; ++s) {
-    patch::shadePloughing(volume, raster[s], in_patch, settings.mu_max, gx.data() + s * count,
-                          gy.data() + s * count);
+    patch::shadePloughing(volume, raster[s], in_patch, settings.mu_max, shade,
+                          gx.data() + s * count, gy.data() + s * count);
   }
   const Clock::time_point t1 = Clock::now();
   // Eq. 8 sums through the friction module's kernel.

@@ -114,6 +114,7 @@ void rasterisePlane(const Volume& volume, const Shape& shape, const Placement& p
   };
   prim.u = uvAffine(tex.t);
   prim.v = uvAffine(tex.b);
+  setFloatUv(prim);
   const Vec3 tc = pl.m * tex.t, bc = pl.m * tex.b;
   for (int k = 0; k < 3; ++k) {
     prim.tbn[static_cast<size_t>(k)].c = tc[k];

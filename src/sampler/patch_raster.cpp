@@ -75,6 +75,13 @@ void pixelRange(const Volume& volume, double a, double b, int& lo, int& hi) {
   hi = static_cast<int>(std::clamp(fb, -1.0, static_cast<double>(volume.resolution - 1)));
 }
 
+void setFloatUv(Planar& prim) {
+  prim.uf = {static_cast<float>(prim.u.c), static_cast<float>(prim.u.dx),
+             static_cast<float>(prim.u.dy)};
+  prim.vf = {static_cast<float>(prim.v.c), static_cast<float>(prim.v.dx),
+             static_cast<float>(prim.v.dy)};
+}
+
 void SurfaceRaster::reset(Side s, int pixels) {
   side = s;
   key.assign(static_cast<size_t>(pixels), kEmpty);
@@ -129,30 +136,86 @@ bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool 
       out.frame(row, col) = static_cast<float>(out.tbn[static_cast<size_t>(3 * col + row)].c);
     }
   }
+  setFloatUv(out);
   out.material = material;
   return true;
 }
+
+namespace {
+
+// Whether pixel centre (x, y) is inside the primitive and its depth clip (the exact test).
+bool insidePlanar(const Planar& prim, double h, double x, double y) {
+  for (int k = 0; k < prim.edge_count; ++k) {
+    if (!prim.edges[static_cast<size_t>(k)].inside(x, y)) return false;
+  }
+  return std::abs(prim.z.at(x, y)) <= h;
+}
+
+// Narrows [lo, hi] to the pixels of the row where a x + rest satisfies the half-line (> 0, or
+// >= 0 when inclusive) or, for the depth clip, |a x + rest| <= h. Conservative: the exact test
+// trims the ends afterwards.
+void clipSpan(const Volume& volume, double a, double lo_value, double hi_value, int& lo, int& hi) {
+  // Solutions of lo_value <= a x <= hi_value, as pixel indices.
+  if (a == 0.0) {
+    if (lo_value > 0.0 || hi_value < 0.0) hi = lo - 1;
+    return;
+  }
+  const double x0 = volume.centreX(0);
+  double from = lo_value / a, to = hi_value / a;
+  if (a < 0.0) std::swap(from, to);
+  const double limit = volume.resolution + 1.0;
+  const double first = std::clamp(std::floor((from - x0) / volume.pixel), -1.0, limit);
+  const double last = std::clamp(std::ceil((to - x0) / volume.pixel), -1.0, limit);
+  lo = std::max(lo, static_cast<int>(first));
+  hi = std::min(hi, static_cast<int>(last));
+}
+
+}  // namespace
 
 void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, SurfaceRaster& raster) {
   const int r = volume.resolution;
   const double h = volume.half_depth;
   const float sign = raster.side == Side::B ? 1.0f : -1.0f;
+  constexpr double kBig = std::numeric_limits<double>::max();
+  // Small primitives (mesh triangles near pixel size): the exact test per pixel is cheaper.
+  if ((prim.i1 - prim.i0 + 1) * (prim.j1 - prim.j0 + 1) <= 9) {
+    for (int j = prim.j0; j <= prim.j1; ++j) {
+      for (int i = prim.i0; i <= prim.i1; ++i) {
+        const double x = volume.centreX(i), y = volume.centreX(j);
+        if (!insidePlanar(prim, h, x, y)) continue;
+        const size_t idx = static_cast<size_t>(j * r + i);
+        const float k = sign * static_cast<float>(prim.z.at(x, y));
+        if (k > raster.key[idx]) {
+          raster.key[idx] = k;
+          raster.primitive[idx] = id;
+        }
+      }
+    }
+    return;
+  }
   for (int j = prim.j0; j <= prim.j1; ++j) {
     const double y = volume.centreX(j);
-    for (int i = prim.i0; i <= prim.i1; ++i) {
-      const double x = volume.centreX(i);
-      // Coverage: inside every edge.
-      bool inside = true;
-      for (int k = 0; k < prim.edge_count; ++k) inside = inside && prim.edges[k].inside(x, y);
-      if (!inside) continue;
-      // Depth clip, then keep the fragment nearest the other body.
-      const double z = prim.z.at(x, y);
-      if (!(std::abs(z) <= h)) continue;
-      const size_t idx = static_cast<size_t>(j * r + i);
-      const float key = sign * static_cast<float>(z);
-      if (key > raster.key[idx]) {
-        raster.key[idx] = key;
-        raster.primitive[idx] = id;
+    // The row's span: every edge and the depth clip bound x from one side or both.
+    int lo = prim.i0, hi = prim.i1;
+    for (int k = 0; k < prim.edge_count && lo <= hi; ++k) {
+      const Edge& e = prim.edges[static_cast<size_t>(k)];
+      clipSpan(volume, e.a, -(e.b * y + e.c), kBig, lo, hi);
+    }
+    const double zr = prim.z.c + prim.z.dy * y;
+    if (lo <= hi) clipSpan(volume, prim.z.dx, -h - zr, h - zr, lo, hi);
+    // Trim the conservative ends with the exact test.
+    while (lo <= hi && !insidePlanar(prim, h, volume.centreX(lo), y)) ++lo;
+    while (lo <= hi && !insidePlanar(prim, h, volume.centreX(hi), y)) --hi;
+    // Inside the span: keep the fragment nearest the other body.
+    float* key = raster.key.data() + static_cast<size_t>(j * r);
+    int32_t* primitive = raster.primitive.data() + static_cast<size_t>(j * r);
+    const double step = prim.z.dx * volume.pixel;
+    double z = zr + prim.z.dx * volume.centreX(lo);
+    for (int i = lo; i <= hi; ++i, z += step) {
+      const float k = sign * static_cast<float>(z);
+      if (k > key[i]) {
+        key[i] = k;
+        primitive[i] = id;
       }
     }
   }

@@ -31,6 +31,10 @@ struct Volume {
   double pixel = 0.02 / 16;      // w / R
 
   double centreX(int i) const { return -0.5 * width + (i + 0.5) * pixel; }
+  // Packs pixel (i, j) for the fragment lists (i, j < 2^16).
+  static uint32_t pack(int i, int j) {
+    return static_cast<uint32_t>(i) | static_cast<uint32_t>(j) << 16;
+  }
 };
 
 // a + dx x + dy y: an attribute that is affine over a planar primitive.
@@ -63,8 +67,9 @@ struct Planar {
   std::array<Edge, 4> edges{};
   Affine z;
   Affine u, v;
-  bool smooth = false;          // false: `frame` holds the constant frame
-  std::array<Affine, 9> tbn{};  // T, B, N components (contact frame)
+  std::array<float, 3> uf{}, vf{};  // u, v as float (c, dx, dy) for the fragment loop
+  bool smooth = false;              // false: `frame` holds the constant frame
+  std::array<Affine, 9> tbn{};      // T, B, N components (contact frame)
   Eigen::Matrix3f frame =
       Eigen::Matrix3f::Identity();       // columns T, B, N at tbn[].c (flat primitives)
   int i0 = 0, i1 = -1, j0 = 0, j1 = -1;  // pixel bounds (inclusive)
@@ -102,6 +107,9 @@ struct PolygonVertex {
   double u = 0.0, v = 0.0;
   std::array<double, 9> tbn{};
 };
+// Fills Planar::uf, vf from u, v.
+void setFloatUv(Planar& prim);
+
 bool makePlanar(const Volume& volume, const PolygonVertex* vertices, int count, bool smooth,
                 const Material& material, Planar& out);
 

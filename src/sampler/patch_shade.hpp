@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "sampler/patch_raster.hpp"
 
@@ -18,8 +19,16 @@ struct Fragment {
 // The fragment kept at `pixel` of `raster` (which must be covered).
 Fragment shadeFragment(const Volume& volume, const SurfaceRaster& raster, int pixel);
 
-// g = gain * ploughingVector(m) for each listed (covered) pixel, into gx[k], gy[k].
+// Buffers of shadePloughing, kept by the caller between contacts.
+struct ShadeScratch {
+  std::vector<Vec3f> normals;
+  std::vector<float> gains;
+};
+
+// g = gain * ploughingVector(m) for each listed (covered) pixel (Volume::pack(i, j)), into
+// gx[k], gy[k].
 void shadePloughing(const Volume& volume, const SurfaceRaster& raster,
-                    std::span<const int32_t> pixels, float mu_max, float* gx, float* gy);
+                    std::span<const uint32_t> pixels, float mu_max, ShadeScratch& scratch,
+                    float* gx, float* gy);
 
 }  // namespace asperity::patch

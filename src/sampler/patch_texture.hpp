@@ -17,23 +17,35 @@ struct TexelBracket {
   float weight = 0.0f;
 };
 
+// floor() without a libm call (baseline x86-64 has no rounding instruction); |x| < 2^31.
+inline float floorFast(float x) {
+  const auto i = static_cast<float>(static_cast<int>(x));
+  return i > x ? i - 1.0f : i;
+}
+
+// Wraps a texel index into [0, size) (a mask for powers of two).
+inline int wrapTexel(int index, int size) {
+  if ((size & (size - 1)) == 0) return index & (size - 1);
+  const int m = index % size;
+  return m < 0 ? m + size : m;
+}
+
 inline TexelBracket bracketRepeat(float t, int size) {
-  // Texel centres at (i + 0.5) / size; wrap into [0, size).
-  float x = t * static_cast<float>(size) - 0.5f;
-  x -= std::floor(x / static_cast<float>(size)) * static_cast<float>(size);
-  const float base = std::floor(x);
-  int lo = static_cast<int>(base);
-  if (lo >= size) lo -= size;  // x rounded up to size
-  const int hi = lo + 1 == size ? 0 : lo + 1;
-  return {lo, hi, x - base};
+  // Texel centres at (i + 0.5) / size (t is kept small by the callers).
+  const float x = t * static_cast<float>(size) - 0.5f;
+  const float base = floorFast(x);
+  const int lo = wrapTexel(static_cast<int>(base), size);
+  return {lo, lo + 1 == size ? 0 : lo + 1, x - base};
 }
 
 // Bilinear normal-map sample at (u, v) in repeats (unnormalised blend).
-inline Vec3f sampleNormal(const NormalMap& map, float u, float v) {
+[[gnu::always_inline]] inline Vec3f sampleNormal(const NormalMap& map, float u, float v) {
   const TexelBracket bu = bracketRepeat(u, map.width());
   const TexelBracket bv = bracketRepeat(v, map.height());
-  const Vec3f bottom = (1.0f - bu.weight) * map.at(bu.lo, bv.lo) + bu.weight * map.at(bu.hi, bv.lo);
-  const Vec3f top = (1.0f - bu.weight) * map.at(bu.lo, bv.hi) + bu.weight * map.at(bu.hi, bv.hi);
+  const Vec3f* row0 = &map.at(0, bv.lo);
+  const Vec3f* row1 = &map.at(0, bv.hi);
+  const Vec3f bottom = (1.0f - bu.weight) * row0[bu.lo] + bu.weight * row0[bu.hi];
+  const Vec3f top = (1.0f - bu.weight) * row1[bu.lo] + bu.weight * row1[bu.hi];
   return (1.0f - bv.weight) * bottom + bv.weight * top;
 }
 

@@ -1,0 +1,175 @@
+// The CPU patch sampler per contact (SPEC 3): boxes resting on a textured plane (four corner
+// contacts each, a quarter of every patch covered by both surfaces) at N = 4 and 16, R = 16,
+// from 10 to 10 000 contacts; and the Stanford bunny (glmark2's OBJ, 69 666 triangles,
+// planar-projected, 1 mm deep) on the plane. Counter `per_contact` is the time per contact.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "asperity/sampler/cpu_patch_sampler.hpp"
+#include "asperity/texture/generators.hpp"
+
+namespace asperity {
+namespace {
+
+std::shared_ptr<const NormalMap> material(const std::string& name) {
+  GeneratorSpec spec;
+  spec.name = name;
+  spec.size = 256;
+  return std::make_shared<NormalMap>(generateNormalMap(spec));
+}
+
+Body plane() {
+  Body b;
+  b.type = BodyType::Static;
+  Shape s;
+  s.type = ShapeType::Plane;
+  s.surface.normal_map = material("stone");
+  s.surface.texture_size = 0.25;
+  s.surface.gain = 2.0;
+  b.shapes.push_back(s);
+  return b;
+}
+
+// `count` contacts: boxes of 0.2 m in a row, four corner contacts each (phi = 0.1 mm).
+struct Scene {
+  std::vector<Body> bodies;
+  std::vector<Contact> contacts;
+};
+
+Scene boxesOnPlane(int count) {
+  Scene scene;
+  scene.bodies.push_back(plane());
+  const auto oak = material("oak");
+  const int boxes = (count + 3) / 4;
+  for (int i = 0; i < boxes; ++i) {
+    Body b;
+    b.pose.position = Vec3(0.3 * (i % 100), 0.3 * (i / 100), 0.1 - 1e-4);
+    b.pose.rotation = Quat(Eigen::AngleAxisd(0.1 * i, Vec3::UnitZ()));
+    Shape s;
+    s.type = ShapeType::Box;
+    s.half_extents = Vec3(0.1, 0.1, 0.1);
+    s.surface.normal_map = oak;
+    s.surface.gain = 2.0;
+    b.shapes.push_back(s);
+    scene.bodies.push_back(b);
+    for (int k = 0; k < 4 && static_cast<int>(scene.contacts.size()) < count; ++k) {
+      Contact c;
+      c.body_a = static_cast<BodyId>(i + 1);
+      c.body_b = 0;
+      c.shape_a = c.shape_b = 0;
+      const Vec3 corner(k & 1 ? 0.1 : -0.1, k & 2 ? 0.1 : -0.1, -0.1);
+      c.point = b.pose.apply(corner) + Vec3(0, 0, 0.5e-4);
+      c.phi = 1e-4;
+      c.normal = Vec3::UnitZ();
+      c.t = Vec3::UnitX();
+      c.b = Vec3::UnitY();
+      scene.contacts.push_back(c);
+    }
+  }
+  return scene;
+}
+
+// Minimal OBJ reader (v and triangular f lines), enough for glmark2's bunny.
+std::shared_ptr<TriangleMeshData> readObj(const std::string& path, double scale) {
+  std::ifstream in(path);
+  auto mesh = std::make_shared<TriangleMeshData>();
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    std::string tag;
+    s >> tag;
+    if (tag == "v") {
+      double x, y, z;
+      s >> x >> y >> z;
+      mesh->vertices.emplace_back(scale * x, -scale * z, scale * y);  // y up -> z up
+    } else if (tag == "f") {
+      std::array<int, 3> t{};
+      for (int& v : t) {
+        std::string token;
+        s >> token;
+        v = std::stoi(token.substr(0, token.find('/'))) - 1;
+      }
+      mesh->triangles.push_back(t);
+    }
+  }
+  return mesh;
+}
+
+void run(benchmark::State& state, Scene& scene, int n) {
+  CpuPatchSampler sampler;
+  FrictionSettings settings;
+  settings.directions = n;
+  settings.patch_resolution = 16;
+  settings.patch_width = 0.02;
+  sampler.computeCoefficients(scene.bodies, scene.contacts, settings);  // builds mesh BVHs
+  for (auto _ : state) {
+    sampler.computeCoefficients(scene.bodies, scene.contacts, settings);
+    benchmark::DoNotOptimize(scene.contacts.data());
+  }
+  const auto contacts = static_cast<double>(scene.contacts.size());
+  state.counters["per_contact"] = benchmark::Counter(
+      contacts, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  double covered = 0.0;
+  for (const Contact& c : scene.contacts) covered += c.covered_pixels;
+  state.counters["mean_covered"] = covered / contacts;
+}
+
+void BM_BoxOnPlane(benchmark::State& state) {
+  Scene scene = boxesOnPlane(static_cast<int>(state.range(1)));
+  run(state, scene, static_cast<int>(state.range(0)));
+}
+BENCHMARK(BM_BoxOnPlane)
+    ->ArgNames({"N", "contacts"})
+    ->Args({4, 1000})
+    ->Args({16, 1000})
+    ->Args({4, 10})
+    ->Args({4, 100})
+    ->Args({4, 10000});
+
+void BM_BunnyOnPlane(benchmark::State& state) {
+  // The bunny (about 0.2 m) resting on the plane, one contact at each of its lowest vertices.
+  const auto mesh = readObj("/usr/share/glmark2/models/bunny.obj", 0.1);
+  if (mesh->triangles.empty()) {
+    state.SkipWithError("bunny OBJ not found");
+    return;
+  }
+  Scene scene;
+  scene.bodies.push_back(plane());
+  Body bunny;
+  Shape s;
+  s.type = ShapeType::TriangleMesh;
+  s.mesh = mesh;
+  s.surface.normal_map = material("plastic");
+  bunny.shapes.push_back(s);
+  // Sunk 1 mm into the plane; a contact at each of the 16 lowest vertices (phi = its depth,
+  // point halfway between it and the plane).
+  std::vector<Vec3> low = mesh->vertices;
+  std::sort(low.begin(), low.end(), [](const Vec3& a, const Vec3& b) { return a.z() < b.z(); });
+  bunny.pose.position = Vec3(0, 0, -low.front().z() - 1e-3);
+  scene.bodies.push_back(bunny);
+  for (size_t i = 0; i < 16 && i < low.size(); ++i) {
+    const Vec3 v = bunny.pose.apply(low[i]);
+    if (v.z() >= 0.0) break;
+    Contact c;
+    c.body_a = 1;
+    c.body_b = 0;
+    c.shape_a = c.shape_b = 0;
+    c.point = Vec3(v.x(), v.y(), 0.5 * v.z());
+    c.phi = -v.z();
+    scene.contacts.push_back(c);
+  }
+  run(state, scene, static_cast<int>(state.range(0)));
+}
+BENCHMARK(BM_BunnyOnPlane)->ArgNames({"N"})->Arg(4);
+
+}  // namespace
+}  // namespace asperity
+
+BENCHMARK_MAIN();
