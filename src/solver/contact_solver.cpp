@@ -6,6 +6,8 @@
 #include <cmath>
 #include <type_traits>
 
+#include "solver/inline_projections.hpp"
+
 namespace asperity {
 
 namespace {
@@ -38,6 +40,7 @@ void ContactSolver::begin(std::span<const Body> bodies, const SolverSettings& se
     rotation_[i] = body.pose.rotation;
   }
   rows_.clear();
+  order_.clear();
   penetrating_.clear();
   coulomb_.clear();
   box_.clear();
@@ -123,6 +126,38 @@ void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction
     }
     if (settings_.warm_starting) warmStartRow(c.key, row, i);
   }
+  scheduleRows();
+}
+
+void ContactSolver::scheduleRows() {
+  // The sweep order: input order, except that a row sharing a moving body with the row just
+  // before it waits in a FIFO until a row without that dependency has gone first. Consecutive
+  // rows then rarely touch the same velocities, so the processor overlaps them (the four
+  // contacts of a manifold would otherwise form one long dependency chain). Deterministic.
+  order_.clear();
+  pending_.clear();
+  size_t head = 0;
+  int last_a = -1, last_b = -1;
+  auto conflicts = [&](int i) {
+    const ContactRow& r = rows_[static_cast<size_t>(i)];
+    auto moving = [&](int body) { return inv_mass_[static_cast<size_t>(body)] > 0.0; };
+    return (moving(r.a) && (r.a == last_a || r.a == last_b)) ||
+           (moving(r.b) && (r.b == last_a || r.b == last_b));
+  };
+  auto emit = [&](int i) {
+    order_.push_back(i);
+    last_a = rows_[static_cast<size_t>(i)].a;
+    last_b = rows_[static_cast<size_t>(i)].b;
+  };
+  for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
+    if (head < pending_.size() && !conflicts(pending_[head])) emit(pending_[head++]);
+    if (conflicts(i)) {
+      pending_.push_back(i);
+    } else {
+      emit(i);
+    }
+  }
+  while (head < pending_.size()) emit(pending_[head++]);
 }
 
 void ContactSolver::warmStartRow(uint64_t key, ContactRow& row, size_t index) const {
@@ -172,13 +207,12 @@ void ContactSolver::warmStart() {
 template <class Limit>
 double ContactSolver::sweepContacts(std::span<const Limit> limits) {
   double delta2 = 0.0;
-  for (size_t i = 0; i < rows_.size(); ++i) {
+  for (const int index : order_) {
+    const size_t i = static_cast<size_t>(index);
     ContactRow& r = rows_[i];
     const size_t a = static_cast<size_t>(r.a), b = static_cast<size_t>(r.b);
-    Vec3& va = v_[a];
-    Vec3& wa = w_[a];
-    Vec3& vb = v_[b];
-    Vec3& wb = w_[b];
+    // Local copies: the compiler need not reload the row after each velocity write.
+    Vec3 va = v_[a], wa = w_[a], vb = v_[b], wb = w_[b];
     const double ima = inv_mass_[a], imb = inv_mass_[b];
     // Normal row: lambda_n >= 0 (SPEC 1: impulse lambda_n n on A).
     const double vn = r.n.dot(va - vb) + wa.dot(r.ra_n) - wb.dot(r.rb_n);
@@ -197,13 +231,15 @@ double ContactSolver::sweepContacts(std::span<const Limit> limits) {
       const Vec2 vel(r.t.dot(dv) + wa.dot(r.ra_t) - wb.dot(r.rb_t),
                      r.bt.dot(dv) + wa.dot(r.ra_b) - wb.dot(r.rb_b));
       const Vec2 old(r.lambda_t, r.lambda_b);
-      const Vec2 block = old - r.inv_k_tb * vel;
-      Vec2 next = limits[i].project(block, ln);
+      bool outside = false;
+      Vec2 next = solver_detail::projectInline(limits[i], old - r.inv_k_tb * vel, ln, outside);
       // Sliding (the block update left the limit set): redo the update in the isotropic
       // metric 1 / k_max so that the projected friction opposes the slip velocity (maximal
       // dissipation). Projecting the K^-1-metric update instead turns the friction off the
       // slip direction wherever K couples t and b, which spins a sliding box about n.
-      if (next != block) next = limits[i].project(old - r.inv_k_slide * vel, ln);
+      if (outside) {
+        next = solver_detail::projectInline(limits[i], old - r.inv_k_slide * vel, ln, outside);
+      }
       const Vec2 d = next - old;
       r.lambda_t = next.x();
       r.lambda_b = next.y();
@@ -213,6 +249,13 @@ double ContactSolver::sweepContacts(std::span<const Limit> limits) {
       vb -= imb * p;
       wb -= d.x() * r.ib_t + d.y() * r.ib_b;
       delta2 += d.squaredNorm();
+    }
+    v_[a] = va;
+    w_[a] = wa;
+    // Static and kinematic bodies keep their velocity: no store, no false dependency.
+    if (imb > 0.0) {
+      v_[b] = vb;
+      w_[b] = wb;
     }
   }
   return delta2;

@@ -85,7 +85,11 @@ void World::applyDrivers() {
     if (!b.isDynamic()) continue;
     b.linear_velocity += dt * (settings_.gravity + b.inverse_mass * b.force);
     b.angular_velocity += dt * (b.inverseInertiaWorld() * b.torque);
-    b.angular_velocity = gyroscopicStep(b, b.angular_velocity, dt);
+    // Isotropic inertia (cubes, spheres) has no gyroscopic torque.
+    const Vec3& inv_i = b.inverse_inertia_local;
+    if (inv_i.maxCoeff() - inv_i.minCoeff() > 1e-12 * inv_i.maxCoeff()) {
+      b.angular_velocity = gyroscopicStep(b, b.angular_velocity, dt);
+    }
   }
 }
 

@@ -112,6 +112,7 @@ class ContactSolver {
 
   void prepareContact(const Contact& c, ContactRow& row) const;
   void warmStartRow(uint64_t key, ContactRow& row, size_t index) const;
+  void scheduleRows();
   void warmStart();
   void warmStartJoints();
   void addAngularRow(int a, int b, int joint, int slot, const Vec3& u, double target);
@@ -133,6 +134,8 @@ class ContactSolver {
   // Rows.
   std::vector<ContactRow> rows_;
   std::vector<int> penetrating_;  // rows with a split-impulse target
+  std::vector<int> order_;        // sweep order of the contact rows (see scheduleRows)
+  std::vector<int> pending_;      // scratch of scheduleRows
   std::vector<CoulombLimit> coulomb_;
   std::vector<BoxLimit> box_;
   std::vector<PolygonLimit> polygon_;
