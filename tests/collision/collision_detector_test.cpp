@@ -63,6 +63,35 @@ TEST(CollisionDetector, MillimetreBoxOnPlaneAwayFromTheOrigin) {
   expectBoxOnPlane(0.002, 2e-4, 0.0, Vec3::Zero(), 1e-6);
 }
 
+TEST(CollisionDetector, MillimetreBoxStack) {
+  // Two 4 mm cubes, the upper one 10 um into the lower, away from the origin.
+  const double h = 0.002, d = 1e-5;
+  const Vec3 at(0.3, 0.2, 0.1);
+  const auto contacts =
+      detectOnce({boxBody(Vec3::Constant(h), at, 0.0),
+                  boxBody(Vec3::Constant(h), at + Vec3(0.0003, 0, 2 * h - d), 0.3)});
+  ASSERT_EQ(contacts.size(), 4u);
+  for (const Contact& c : contacts) {
+    EXPECT_TRUE(near(c.phi, d, 0, 1e-7));
+    EXPECT_TRUE(near(c.normal.z(), -1.0, 0, 1e-6));
+    EXPECT_TRUE(near(c.point.z(), at.z() + h - d / 2, 0, 1e-7));
+  }
+}
+
+TEST(CollisionDetector, KinematicBodyIsB) {
+  // A kinematic box under a dynamic sphere with the higher id: the sphere is still A.
+  Body platform = boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0);
+  platform.type = BodyType::Kinematic;
+  const auto contacts =
+      detectOnce({sphereBody(0.1, Vec3(2, 0, 0.5)), platform, sphereBody(0.1, Vec3(0, 0, 0.098))});
+  ASSERT_EQ(contacts.size(), 1u);
+  EXPECT_EQ(contacts[0].body_a, 2u);
+  EXPECT_EQ(contacts[0].body_b, 1u);
+  EXPECT_TRUE(near(contacts[0].normal.z(), 1.0, 0, 1e-6));
+  EXPECT_TRUE(near(contacts[0].phi, 0.002, 0, 1e-7));
+  EXPECT_EQ(contacts[0].feature_b, 4);  // the platform's +z face
+}
+
 TEST(CollisionDetector, SphereOnPlaneHasOneContactWithDepthRadiusMinusHeight) {
   const double r = 0.1, height = 0.093;
   const std::vector<Body> bodies = {groundPlane(), sphereBody(r, Vec3(0.2, 0.1, height))};
