@@ -1,0 +1,159 @@
+// instantiate(): normal maps, masks and meshes resolved and shared, bodies, joints, springs and
+// loads created by name, the sampler installed, and a sliding box that stops where Coulomb says.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "asperity/error.hpp"
+#include "asperity/scene/scene.hpp"
+#include "asperity/texture/generators.hpp"
+#include "asperity/texture/png_io.hpp"
+#include "support/test_support.hpp"
+
+namespace asperity {
+namespace {
+
+namespace fs = std::filesystem;
+
+SceneDesc example(const std::string& name) {
+  return loadScene(test::sourcePath("scenes/examples/" + name));
+}
+
+const Surface& surfaceOf(const World& world, const std::string& body, size_t shape = 0) {
+  return world.body(world.findBody(body)).shapes.at(shape).surface;
+}
+
+TEST(Instantiate, EveryExampleBuildsAWorld) {
+  for (const auto& e : fs::directory_iterator(test::sourcePath("scenes/examples"))) {
+    if (e.path().extension() != ".json") continue;
+    SCOPED_TRACE(e.path().string());
+    const SceneDesc scene = loadScene(e.path().string());
+    const std::unique_ptr<World> world = instantiate(scene);
+    ASSERT_EQ(world->bodies().size(), scene.bodies.size());
+    for (size_t i = 0; i < scene.bodies.size(); ++i)
+      EXPECT_EQ(world->findBody(scene.bodies[i].name), static_cast<BodyId>(i));
+    EXPECT_EQ(world->joints().size(), scene.joints.size());
+    EXPECT_EQ(world->springs().size(), scene.springs.size());
+    EXPECT_EQ(world->loads().size(), scene.loads.size());
+    EXPECT_EQ(world->frictionProvider().name(), scene.sampler);
+    EXPECT_EQ(world->settings().dt, scene.settings.dt);
+  }
+}
+
+TEST(Instantiate, EqualGeneratedSurfacesShareOneMap) {
+  const std::unique_ptr<World> world = instantiate(example("generated_surfaces.json"));
+  const Surface& a = surfaceOf(*world, "box_concrete");
+  const Surface& b = surfaceOf(*world, "box_sawtooth");
+  ASSERT_NE(a.normal_map, nullptr);
+  EXPECT_EQ(a.normal_map.get(), b.normal_map.get());
+  EXPECT_NE(a.normal_map.get(), surfaceOf(*world, "sawtooth_plane").normal_map.get());
+  // The map is the generator's, texel for texel.
+  const NormalMap expected = generateNormalMap(a.generator);
+  ASSERT_EQ(a.normal_map->width(), 64);
+  EXPECT_EQ(a.normal_map->texels(), expected.texels());
+}
+
+TEST(Instantiate, PngMapsFollowTheGreenConventionAndMasksLoad) {
+  const std::unique_ptr<World> world = instantiate(example("png_surface.json"));
+  const Surface& ground = surfaceOf(*world, "ground");
+  const Surface& puck = surfaceOf(*world, "puck");
+  ASSERT_NE(ground.normal_map, nullptr);
+  ASSERT_NE(puck.normal_map, nullptr);
+  EXPECT_NE(ground.normal_map.get(), puck.normal_map.get());  // OpenGL vs DirectX
+  const NormalMap png = loadNormalMapPng(test::sourcePath("scenes/examples/textures/ridges.png"));
+  EXPECT_EQ(ground.normal_map->texels(), png.texels());
+  EXPECT_EQ(puck.normal_map->at(3, 5).y(), -ground.normal_map->at(3, 5).y());
+  // Mask: left half 255, right half 64 (grey levels / 255).
+  ASSERT_NE(ground.mask, nullptr);
+  ASSERT_EQ(ground.mask->width, 16);
+  EXPECT_FLOAT_EQ(ground.mask->values[0], 1.0f);
+  EXPECT_FLOAT_EQ(ground.mask->values[15], 64.0f / 255.0f);
+  EXPECT_EQ(puck.mask, nullptr);
+}
+
+TEST(Instantiate, MeshesAreLoadedScaledAndSimplified) {
+  const std::unique_ptr<World> world = instantiate(example("meshes.json"));
+  const Shape& bunny = world->body(world->findBody("bunny")).shapes[0];
+  ASSERT_NE(bunny.mesh, nullptr);
+  EXPECT_LE(bunny.mesh->triangles.size(), 500u);
+  EXPECT_GT(bunny.mesh->triangles.size(), 100u);
+  const Shape& wedge = world->body(world->findBody("wedge")).shapes[0];
+  const Shape& bump = world->body(world->findBody("bump")).shapes[0];
+  ASSERT_NE(wedge.mesh, nullptr);
+  ASSERT_NE(bump.mesh, nullptr);
+  EXPECT_EQ(bump.mesh->triangles.size(), 8u);
+  // Scale 2 doubles every coordinate of the same file.
+  double wedge_max = 0.0;
+  double bump_max = 0.0;
+  for (const Vec3& v : wedge.mesh->vertices) wedge_max = std::max(wedge_max, v.norm());
+  for (const Vec3& v : bump.mesh->vertices) bump_max = std::max(bump_max, v.norm());
+  EXPECT_GT(bump_max, wedge_max);
+}
+
+TEST(Instantiate, NamesBecomeIds) {
+  const SceneDesc scene = example("joints.json");
+  const std::unique_ptr<World> world = instantiate(scene);
+  EXPECT_EQ(world->joints()[0].body_a, world->findBody("head"));
+  EXPECT_EQ(world->joints()[0].body_b, world->findBody("tail"));
+  EXPECT_EQ(world->joints()[2].body_b, world->findBody("door"));
+  const std::unique_ptr<World> loads = instantiate(example("loads.json"));
+  EXPECT_EQ(loads->loads()[0].body, loads->findBody("middle"));
+}
+
+TEST(Instantiate, SlidingBoxStopsAtTheCoulombDistance) {
+  // minimal.json: v0 = 1 m/s, mu0 = 0.2 on flat surfaces: d = v0^2 / (2 mu0 g).
+  const std::unique_ptr<World> world = instantiate(example("minimal.json"));
+  for (int i = 0; i < 100; ++i) world->step();
+  const Body& box = world->body(world->findBody("box"));
+  EXPECT_TRUE(test::near(box.descriptionPose().position.x(), 1.0 / (2 * 0.2 * 9.81), 0.03));
+  EXPECT_TRUE(test::near(box.linear_velocity.norm(), 0.0, 0.0, 1e-6));
+}
+
+TEST(Instantiate, UnknownSamplerNamesTheSetting) {
+  SceneDesc scene = example("minimal.json");
+  scene.sampler = "velvet";
+  try {
+    instantiate(scene);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(scene.source_file +
+                                              ": /settings/sampler: unknown friction sampler "
+                                              "\"velvet\" (available: ",
+                                          0),
+              0u)
+        << e.what();
+  }
+}
+
+TEST(Instantiate, CorruptPngNamesShapeAndFile) {
+  const std::string dir = test::tempDir("corrupt");
+  std::ofstream(dir + "/bad.png") << "not a png";
+  const std::string path = dir + "/scene.json";
+  std::ofstream(path) << R"({"bodies": [{"name": "b", "shapes": [{"type": "sphere",
+      "radius": 0.1, "surface": {"normal_map": "bad.png"}}]}]})";
+  const SceneDesc scene = loadScene(path);  // the file exists: loading succeeds
+  try {
+    instantiate(scene);
+    FAIL();
+  } catch (const Error& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind(path + ": /bodies/0/shapes/0/surface/normal_map: ", 0), 0u) << message;
+    EXPECT_NE(message.find("bad.png"), std::string::npos) << message;
+  }
+}
+
+TEST(Instantiate, CodeBuiltSceneWithUnknownJointBody) {
+  SceneDesc scene = example("minimal.json");
+  scene.joints.push_back({"box", "lid", JointDesc{}});
+  try {
+    instantiate(scene);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              scene.source_file + ": /joints/0: body_b: unknown body \"lid\"");
+  }
+}
+
+}  // namespace
+}  // namespace asperity
