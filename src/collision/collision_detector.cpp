@@ -9,8 +9,9 @@
 // point, from which the contact key is hashed. Everything after that is done here in double
 // precision: witness points from the manifold's local points through the double body poses, snapped
 // onto the exact primitive surfaces (contact_geometry), phi from the witness points.
-// Concave mesh pairs where both meshes are closed go through signed distance fields instead
-// (sdf_contacts): the near callback records those pairs and Bullet does not touch them.
+// Pairs with a dynamic closed mesh go through signed distances instead (sdf_pairs), and
+// pairs with a plane through plane_contacts: the near callback records those pairs and
+// Bullet's narrowphase does not touch them.
 //
 // One Bullet collision object per shape (not a btCompoundShape per body): Bullet stores a
 // compound's child index and a mesh's triangle index in the same manifold field, so separate
@@ -36,46 +37,14 @@
 #include "collision/bullet_shapes.hpp"
 #include "collision/contact_geometry.hpp"
 #include "collision/plane_contacts.hpp"
-#include "collision/sdf_contacts.hpp"
+#include "collision/sdf_pairs.hpp"
+#include "collision/shape_record.hpp"
 
 namespace asperity {
 
 using namespace collision_detail;
 
 namespace {
-
-// splitmix64 finaliser over a running combination: keys that differ in any field differ.
-uint64_t mix(uint64_t h, uint64_t v) {
-  h ^= v + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
-  h ^= h >> 30, h *= 0xbf58476d1ce4e5b9ull;
-  h ^= h >> 27, h *= 0x94d049bb133111ebull;
-  return h ^ (h >> 31);
-}
-
-uint64_t contactKey(const Contact& c, uint64_t point_id) {
-  uint64_t h = mix(0, c.body_a);
-  h = mix(h, c.body_b);
-  h = mix(h, static_cast<uint64_t>(static_cast<uint32_t>(c.shape_a)));
-  h = mix(h, static_cast<uint64_t>(static_cast<uint32_t>(c.shape_b)));
-  return mix(h, point_id);
-}
-
-// Query points per mesh for the signed-distance path (bounds the cost per pair and call).
-constexpr size_t kMaxSurfaceSamples = 50000;
-
-// One shape of one body, as one Bullet collision object.
-struct ShapeRecord {
-  BodyId body = kNoBody;
-  int index = -1;  // into the body's shapes
-  BodyType body_type = BodyType::Dynamic;
-  Shape shape;
-  BulletShape bullet;
-  std::unique_ptr<btCollisionObject> object;
-  std::shared_ptr<const SignedDistanceField> sdf;  // closed meshes of mesh-only bodies
-  SurfaceSamples samples;                          // query points for the other's field
-  std::vector<Vec4> hull_planes;  // outward unit normal and offset per face (hull shapes)
-  Transform world;                // shape frame in world, this call
-};
 
 // Bullet grows hulls and triangles by their margins in some of its algorithms and not in
 // others; the witness point is put back onto the true surface from what is known exactly:
@@ -97,12 +66,6 @@ Vec3 onTrueSurface(const ShapeRecord& r, const Vec3& witness, const Vec3& outwar
                                v[static_cast<size_t>(tri[1])], v[static_cast<size_t>(tri[2])]));
   }
   return witness;
-}
-
-bool isA(const ShapeRecord& x, const ShapeRecord& y) {
-  const bool xd = x.body_type == BodyType::Dynamic, yd = y.body_type == BodyType::Dynamic;
-  if (xd != yd) return xd;
-  return x.body < y.body;
 }
 
 }  // namespace
@@ -138,8 +101,7 @@ struct CollisionDetector::Impl {
   std::vector<ShapeRecord> records;
   std::vector<BodyType> body_types;
   std::set<std::pair<BodyId, BodyId>> ignored;
-  std::map<std::shared_ptr<const TriangleMeshData>, std::shared_ptr<const SignedDistanceField>>
-      sdf_cache;
+  SdfResources sdf;
 
   std::unique_ptr<btDefaultCollisionConfiguration> config;
   std::unique_ptr<Dispatcher> dispatcher;
@@ -168,7 +130,9 @@ struct CollisionDetector::Impl {
   }
 
   bool isSdfPair(int r0, int r1) const {
-    return records[static_cast<size_t>(r0)].sdf && records[static_cast<size_t>(r1)].sdf;
+    return settings.mesh_pairs == MeshPairMode::Auto &&
+           collision_detail::isSdfPair(records[static_cast<size_t>(r0)],
+                                       records[static_cast<size_t>(r1)]);
   }
 
   // Bullet's narrowphase for ordinary pairs; plane and signed-distance pairs are only recorded.
@@ -203,11 +167,9 @@ struct CollisionDetector::Impl {
   }
 
   void createWorld();
-  void addBody(BodyId id, const Body& body, bool mesh_only);
+  void addBody(BodyId id, const Body& body);
   void collectManifolds();
   void collectPlane(int r0, int r1);
-  void collectSdf(int r0, int r1);
-  void addSdfHits(const ShapeRecord& field, const ShapeRecord& query, bool field_is_a);
 };
 
 void CollisionDetector::Impl::createWorld() {
@@ -221,7 +183,7 @@ void CollisionDetector::Impl::createWorld() {
   world->getPairCache()->setOverlapFilterCallback(&filter);
 }
 
-void CollisionDetector::Impl::addBody(BodyId id, const Body& body, bool mesh_only) {
+void CollisionDetector::Impl::addBody(BodyId id, const Body& body) {
   for (size_t s = 0; s < body.shapes.size(); ++s) {
     ShapeRecord rec;
     rec.body = id;
@@ -229,13 +191,8 @@ void CollisionDetector::Impl::addBody(BodyId id, const Body& body, bool mesh_onl
     rec.body_type = body.type;
     rec.shape = body.shapes[s];
     rec.bullet = makeBulletShape(rec.shape, body.type);
-    // Closed meshes of bodies made only of meshes get a (cached) signed distance field.
-    if (mesh_only && settings.mesh_pairs == MeshPairMode::Auto && isClosedMesh(*rec.shape.mesh)) {
-      auto& cached = sdf_cache[rec.shape.mesh];
-      if (!cached) cached = SignedDistanceField::build(*rec.shape.mesh, settings.sdf_resolution);
-      rec.sdf = cached;
-      rec.samples = surfaceSamples(*rec.shape.mesh, rec.sdf->cellSize(), kMaxSurfaceSamples);
-    }
+    // Closed meshes may take the signed-distance path (sdf_pairs).
+    rec.closed_mesh = rec.shape.type == ShapeType::TriangleMesh && isClosedMesh(*rec.shape.mesh);
     // Face planes of hulls, for putting witness points back onto the true surface.
     if (rec.bullet.shape->getShapeType() == CONVEX_HULL_SHAPE_PROXYTYPE) {
       const auto* hull = static_cast<const btConvexHullShape*>(rec.bullet.shape.get());
@@ -324,50 +281,9 @@ void CollisionDetector::Impl::collectPlane(int r0, int r1) {
     c.phi = -p.distance;
     c.point = 0.5 * (c.witness_a + c.witness_b);
     if (ra.shape.type == ShapeType::Box) c.feature_a = boxFace(ra.world, -c.normal);
-    c.key = contactKey(c, static_cast<uint64_t>(p.id) | (uint64_t{1} << 61));
+    c.key = contactKey(c, static_cast<uint64_t>(p.id) | kPlanePointTag);
     contacts.push_back(c);
   }
-}
-
-void CollisionDetector::Impl::addSdfHits(const ShapeRecord& field, const ShapeRecord& query,
-                                         bool field_is_a) {
-  // Query points: the other mesh's vertices; spacing and threshold in grid cells.
-  SdfQuery q;
-  const double cell = field.sdf->cellSize();
-  q.max_distance =
-      settings.report_gaps ? (settings.contact_margin > 0 ? settings.contact_margin : cell) : 0.0;
-  q.max_hits = settings.sdf_max_contacts;
-  q.min_spacing = settings.sdf_min_spacing * cell;
-  const auto hits = sdfHits(*field.sdf, field.world, query.samples.points, query.world, q);
-  for (const SdfHit& h : hits) {
-    // The query vertex is the deepest point of its shape; the field gives the surface point.
-    Contact c;
-    const ShapeRecord& ra = field_is_a ? field : query;
-    const ShapeRecord& rb = field_is_a ? query : field;
-    c.body_a = ra.body, c.body_b = rb.body;
-    c.shape_a = ra.index, c.shape_b = rb.index;
-    const int query_triangle = query.samples.triangle[static_cast<size_t>(h.vertex)];
-    c.witness_a = field_is_a ? h.surface : h.point;
-    c.witness_b = field_is_a ? h.point : h.surface;
-    c.normal = field_is_a ? Vec3(-h.outward) : h.outward;
-    c.feature_a = field_is_a ? h.triangle : query_triangle;
-    c.feature_b = field_is_a ? query_triangle : h.triangle;
-    c.phi = (c.witness_b - c.witness_a).dot(c.normal);
-    c.point = 0.5 * (c.witness_a + c.witness_b);
-    // Keyed by the query vertex and the direction of the query.
-    c.key = contactKey(
-        c, (static_cast<uint64_t>(h.vertex) << 1 | (field_is_a ? 1u : 0u)) | (uint64_t{1} << 62));
-    contacts.push_back(c);
-  }
-}
-
-void CollisionDetector::Impl::collectSdf(int r0, int r1) {
-  const ShapeRecord& x = records[static_cast<size_t>(r0)];
-  const ShapeRecord& y = records[static_cast<size_t>(r1)];
-  const bool x_is_a = isA(x, y);
-  // Each mesh's vertices against the other's field.
-  addSdfHits(x, y, x_is_a);
-  addSdfHits(y, x, !x_is_a);
 }
 
 CollisionDetector::CollisionDetector() : impl_(std::make_unique<Impl>()) {}
@@ -380,18 +296,15 @@ void CollisionDetector::setBodies(std::span<const Body> bodies, const CollisionS
   Impl& s = *impl_;
   s.release();
   s.settings = settings;
+  s.sdf.reset(settings);
   s.contacts.clear();
   s.body_types.clear();
   s.createWorld();
   // Records for every shape of every body, then the Bullet objects.
   for (size_t b = 0; b < bodies.size(); ++b) {
     const Body& body = bodies[b];
-    const bool mesh_only = !body.shapes.empty() &&
-                           std::all_of(body.shapes.begin(), body.shapes.end(), [](const Shape& sh) {
-                             return sh.type == ShapeType::TriangleMesh;
-                           });
     s.body_types.push_back(body.type);
-    s.addBody(static_cast<BodyId>(b), body, mesh_only);
+    s.addBody(static_cast<BodyId>(b), body);
   }
   for (ShapeRecord& rec : s.records) s.world->addCollisionObject(rec.object.get());
 }
@@ -413,7 +326,10 @@ const std::vector<Contact>& CollisionDetector::detect(std::span<const Body> bodi
   if (s.world) s.world->performDiscreteCollisionDetection();
   if (s.dispatcher) s.collectManifolds();
   for (const auto& [r0, r1] : s.plane_pairs) s.collectPlane(r0, r1);
-  for (const auto& [r0, r1] : s.sdf_pairs) s.collectSdf(r0, r1);
+  for (const auto& [r0, r1] : s.sdf_pairs) {
+    sdfPairContacts(s.records[static_cast<size_t>(r0)], s.records[static_cast<size_t>(r1)],
+                    s.settings, s.sdf, s.contacts);
+  }
   // Deterministic order (SPEC: same input, same contacts).
   std::sort(s.contacts.begin(), s.contacts.end(), [](const Contact& a, const Contact& b) {
     return std::tie(a.body_a, a.body_b, a.key) < std::tie(b.body_a, b.body_b, b.key);

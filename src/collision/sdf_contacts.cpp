@@ -49,12 +49,19 @@ SurfaceSamples surfaceSamples(const TriangleMeshData& mesh, double spacing, size
 std::vector<SdfHit> sdfHits(const SignedDistanceField& field, const Transform& field_world,
                             std::span<const Vec3> points, const Transform& points_world,
                             const SdfQuery& query) {
+  return sdfHits([&field](const Vec3& p) { return field.sample(p); }, field_world, points,
+                 points_world, query);
+}
+
+std::vector<SdfHit> sdfHits(const DistanceFn& field, const Transform& field_world,
+                            std::span<const Vec3> points, const Transform& points_world,
+                            const SdfQuery& query) {
   // Every query point in the field's frame; keep those below the distance threshold.
   const Transform to_field = field_world.inverse() * points_world;
   std::vector<SdfHit> hits;
   for (size_t i = 0; i < points.size(); ++i) {
     const Vec3 local = to_field.apply(points[i]);
-    const SignedDistanceField::Sample s = field.sample(local);
+    const SignedDistanceField::Sample s = field(local);
     if (!s.inside_grid || s.distance >= query.max_distance) continue;
     SdfHit hit;
     hit.vertex = static_cast<int>(i);

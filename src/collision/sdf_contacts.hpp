@@ -3,6 +3,7 @@
 // face to face are seen): the concave-mesh path of the collision stage.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -36,8 +37,14 @@ struct SdfQuery {
   double min_spacing = 0.0;   // kept hits lie at least this far apart (m)
 };
 
+// A signed distance in the field shape's frame: a grid field or an exact primitive.
+using DistanceFn = std::function<SignedDistanceField::Sample(const Vec3&)>;
+
 // Queries `points` (in the frame `points_world`) against `field` (in `field_world`) and
 // returns the kept hits, deepest first (ties by vertex index, so the order is deterministic).
+std::vector<SdfHit> sdfHits(const DistanceFn& field, const Transform& field_world,
+                            std::span<const Vec3> points, const Transform& points_world,
+                            const SdfQuery& query);
 std::vector<SdfHit> sdfHits(const SignedDistanceField& field, const Transform& field_world,
                             std::span<const Vec3> points, const Transform& points_world,
                             const SdfQuery& query);

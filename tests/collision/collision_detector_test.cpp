@@ -395,6 +395,47 @@ TEST(CollisionDetector, NutOnBoltUsesSignedDistance) {
   EXPECT_GE(face_contacts, 4);
 }
 
+TEST(CollisionDetector, NutOnCylinderBolt) {
+  // A static cylinder bolt (r 1.8 mm) through the dynamic nut's square bore.
+  Shape rod;
+  rod.type = ShapeType::Cylinder;
+  rod.radius = 0.0018;
+  rod.half_height = 0.01;
+  Body bolt = makeBody(BodyType::Static, Vec3::Zero(), Quat::Identity(), rod);
+  const auto nut = squareNutMesh(0.0035, 0.002, 0.0016);
+  EXPECT_TRUE(detectOnce({bolt, meshBody(nut, BodyType::Dynamic, Vec3(0, 0, 0.002))}).empty());
+  // Shifted 0.25 mm: the bore's -x wall cuts 50 um into the rod at y = 0.
+  const auto contacts =
+      detectOnce({bolt, meshBody(nut, BodyType::Dynamic, Vec3(0.00025, 0, 0.002))});
+  ASSERT_FALSE(contacts.empty());
+  double deepest = 0;
+  for (const Contact& c : contacts) {
+    EXPECT_EQ(c.body_a, 1u);
+    EXPECT_LT(c.normal.x(), -0.9) << c.normal.transpose();
+    EXPECT_LE(c.phi, 5e-5 + 1e-6);
+    // The rod's witness lies on the rod.
+    EXPECT_TRUE(near(std::hypot(c.witness_b.x(), c.witness_b.y()), 0.0018, 0, 1e-7));
+    deepest = std::max(deepest, c.phi);
+  }
+  EXPECT_TRUE(near(deepest, 5e-5, 0, 2e-6));
+}
+
+TEST(CollisionDetector, ConcaveMeshOnStaticBox) {
+  // The nut lying on a static box table, 20 um deep: exact depth from the box's distance.
+  Body table = boxBody(Vec3(0.02, 0.02, 0.005), Vec3(0, 0, -0.005), 0.0);
+  table.type = BodyType::Static;
+  const auto nut = squareNutMesh(0.0035, 0.002, 0.0016);
+  const auto contacts =
+      detectOnce({table, meshBody(nut, BodyType::Dynamic, Vec3(0, 0, 0.0016 - 2e-5))});
+  ASSERT_GE(contacts.size(), 4u);
+  for (const Contact& c : contacts) {
+    EXPECT_EQ(c.body_a, 1u);
+    EXPECT_TRUE(near(c.normal.z(), 1.0, 0, 1e-9));
+    EXPECT_TRUE(near(c.phi, 2e-5, 0, 1e-9));
+    EXPECT_EQ(c.feature_b, 4);  // the table's +z face
+  }
+}
+
 TEST(CollisionDetector, SignedDistanceKeysPersist) {
   const auto bodies = nutOnBolt(0.00025);
   CollisionDetector detector;

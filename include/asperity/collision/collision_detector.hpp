@@ -12,12 +12,14 @@
 // -1 otherwise. `key` stays the same for as long as the contact persists (Bullet's persistent
 // manifolds keep the points alive across calls; signed-distance contacts are keyed by vertex).
 //
-// Concave meshes: a static TriangleMesh is a BVH of its triangles; a dynamic TriangleMesh
-// collides as the convex hull of its vertices, except against another TriangleMesh shape when
-// every shape of both bodies is a TriangleMesh and both meshes are closed: then the signed
-// distance path is used (a grid SDF of each closed mesh, queried with points spread over the
-// other mesh: its vertices and a grid on each triangle at the SDF cell size), which sees
-// concave features such as a nut's bore (see signed_distance_field.hpp).
+// Concave meshes: a static TriangleMesh is a BVH of its triangles (Bullet). A dynamic
+// TriangleMesh collides as the convex hull of its vertices, except when it is closed (every
+// edge shared by two triangles) and meets another closed mesh or a box, sphere, capsule or
+// cylinder: then the signed-distance path is used, which sees concave features such as a
+// nut's bore. Each side's surface points (mesh vertices plus a grid on each triangle, about
+// one cell apart) are queried against the other side's signed distance: a grid field for
+// meshes (signed_distance_field.hpp, `sdf_resolution` cells across), the exact distance for
+// primitives. Against planes every convex or mesh shape uses its exact vertices.
 #pragma once
 
 #include <memory>
@@ -31,7 +33,7 @@ namespace asperity {
 
 // How concave mesh pairs are handled.
 enum class MeshPairMode {
-  Auto,       // signed distance fields for mesh-vs-mesh bodies where a mesh is closed
+  Auto,       // signed distances for dynamic closed meshes (see above)
   ConvexHull  // always Bullet: dynamic meshes as convex hulls
 };
 

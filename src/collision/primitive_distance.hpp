@@ -1,0 +1,16 @@
+// Exact signed distances of the primitives (box, sphere, capsule, cylinder) in double: the
+// field side of signed-distance contacts when a concave mesh touches a primitive.
+#pragma once
+
+#include "asperity/collision/signed_distance_field.hpp"
+#include "asperity/geometry/shape.hpp"
+
+namespace asperity::collision_detail {
+
+// True for the shapes primitiveSample handles.
+bool hasPrimitiveDistance(ShapeType type);
+
+// Signed distance (< 0 inside) and outward unit gradient at p (shape frame); `triangle` is -1.
+SignedDistanceField::Sample primitiveSample(const Shape& shape, const Vec3& p);
+
+}  // namespace asperity::collision_detail
