@@ -195,16 +195,22 @@ void rasteriseMesh(const Volume& volume, const Shape& shape, const Placement& pl
 }  // namespace
 
 const CachedMesh& MeshCache::get(const Shape& shape) {
-  if (!shape.mesh) throw Error("patch sampler: mesh shape without mesh data");
-  const Key key{shape.mesh.get(), static_cast<int>(shape.type), shape.surface.texture_size,
-                shape.surface.texture_rotation};
+  const bool curved = shape.type == ShapeType::Sphere || shape.type == ShapeType::Capsule ||
+                      shape.type == ShapeType::Cylinder;
+  if (!curved && !shape.mesh) throw Error("patch sampler: mesh shape without mesh data");
+  const Key key{curved ? nullptr : shape.mesh.get(), static_cast<int>(shape.type),
+                curved ? shape.radius : 0.0,         curved ? shape.half_height : 0.0,
+                shape.surface.texture_size,          shape.surface.texture_rotation};
   auto it = entries_.find(key);
   if (it != entries_.end()) return *it->second;
   // First use: triangulate with uv and frames, then the tree.
   auto entry = std::make_unique<CachedMesh>();
-  entry->mesh = buildShapeMesh(shape);
+  ShapeMeshOptions options;
+  options.segments = kCurvedSegments;
+  options.rings = kCurvedRings;
+  entry->mesh = buildShapeMesh(shape, options);
   entry->bvh = TriangleBvh(entry->mesh.positions, entry->mesh.triangles);
-  entry->smooth = shape.type == ShapeType::TriangleMesh && !shape.mesh->uvs.empty();
+  entry->smooth = curved || (shape.type == ShapeType::TriangleMesh && !shape.mesh->uvs.empty());
   entry->keep_alive = shape.mesh;
   return *entries_.emplace(key, std::move(entry)).first->second;
 }

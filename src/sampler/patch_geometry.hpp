@@ -23,13 +23,19 @@ struct CachedMesh {
   std::shared_ptr<const TriangleMeshData> keep_alive;
 };
 
+// Tessellation of curved shapes when they are meshed (segments around, rings pole to pole).
+inline constexpr int kCurvedSegments = 256;
+inline constexpr int kCurvedRings = 128;
+
+// Shape meshes by mesh data and mapping; also tessellated spheres, capsules and cylinders.
 class MeshCache {
  public:
   const CachedMesh& get(const Shape& shape);
   size_t size() const { return entries_.size(); }
 
  private:
-  using Key = std::tuple<const TriangleMeshData*, int, double, double>;
+  // Mesh data (null for curved shapes), type, radius, half height, texture size, rotation.
+  using Key = std::tuple<const TriangleMeshData*, int, double, double, double, double>;
   std::map<Key, std::unique_ptr<CachedMesh>> entries_;
 };
 

@@ -42,4 +42,8 @@ class CpuPatchSampler : public FrictionProvider {
   double averaging_ms_ = 0.0;
 };
 
+// Registers "cpu" (a CpuPatchSampler) with the scene's friction provider registry
+// (scene/friction_registry.hpp); front ends call it once before loading scenes.
+void registerCpuPatchSampler();
+
 }  // namespace asperity

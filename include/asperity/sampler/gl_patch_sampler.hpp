@@ -1,0 +1,58 @@
+// The OpenGL patch sampler (SPEC 3, Sec. 4 of the paper): both surfaces of every contact are
+// rendered into R x R tiles of an atlas frame buffer (one orthographic view per contact, the
+// tile as viewport), the fragment shader evaluates Eq. 5 for the N directions into N / 4 RGBA
+// targets at once (plus a coverage target), the atlas is read back through pixel buffer objects
+// and a fence while the next pass renders, and the tiles are averaged on the CPU with the same
+// aggregation as the CPU sampler (Eqs. 8 and 7). More contacts than the atlas holds take
+// further passes; more directions than the frame buffer's draw buffers take further sub-passes.
+//
+// Geometry is the CPU sampler's (box faces and planes exact, meshes via their BVH) except that
+// spheres, capsules and cylinders are tessellated (256 x 128) instead of ray-cast.
+// Normal maps are uploaded once per NormalMap (RGB32F, bilinear, repeat) and cached.
+// Packing: RGBA8 with scale mu_max as the paper (coefficients above mu_max saturate, steps of
+// mu_max / 255), or RGBA32F targets (float_targets).
+#pragma once
+
+#include <memory>
+
+#include "asperity/sampler/friction_provider.hpp"
+#include "asperity/sampler/patch_sampler.hpp"
+
+namespace asperity {
+
+struct GlSamplerOptions {
+  int atlas_size = 1024;             // frame buffer side (pixels)
+  bool float_targets = false;        // RGBA32F instead of RGBA8
+  bool use_current_context = false;  // render with the caller's current context (e.g. viewer)
+};
+
+class GlPatchSampler : public FrictionProvider {
+ public:
+  // Creates a headless context (gl/context.hpp) unless use_current_context. Throws
+  // asperity::Error when no OpenGL 4.3 context is available or the options are bad.
+  explicit GlPatchSampler(const GlSamplerOptions& options = {});
+  ~GlPatchSampler() override;
+
+  std::string name() const override { return "gl"; }
+  // Throws asperity::Error for bad settings (validatePatchSettings, N a multiple of 4), bad
+  // contacts or surfaces, or a GL failure.
+  void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
+                           const FrictionSettings& settings) override;
+  double lastPatchTimeMs() const override;
+  double lastAveragingTimeMs() const override;
+
+  // GL_RENDERER of the context in use, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
+  std::string renderer() const;
+  // Passes of the last call (atlas fills).
+  int lastPassCount() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// Registers "gl" (a GlPatchSampler with default options) with the scene's friction provider
+// registry (scene/friction_registry.hpp).
+void registerGlPatchSampler();
+
+}  // namespace asperity

@@ -1,0 +1,15 @@
+# Turns each GLSL file into a std::string_view constant of one generated header (the GLSL exists
+# once, in src/sampler/gl/shaders/). Run as: cmake -DOUTPUT=... -DSOURCES=a|b -P this file.
+string(REPLACE "|" ";" SOURCES "${SOURCES}")
+set(text "// Generated from src/sampler/gl/shaders/*.glsl by embed_shaders.cmake. Do not edit.\n")
+string(APPEND text "#pragma once\n\n#include <string_view>\n\nnamespace asperity::gl_shaders {\n\n")
+foreach(source ${SOURCES})
+  get_filename_component(name ${source} NAME)
+  string(REGEX REPLACE "\\.glsl$" "" name ${name})
+  string(REPLACE "." "_" name ${name})
+  file(READ ${source} body)
+  string(APPEND text "inline constexpr std::string_view ${name} = R\"glsl(${body})glsl\";\n\n")
+endforeach()
+string(APPEND text "}  // namespace asperity::gl_shaders\n")
+file(WRITE ${OUTPUT}.tmp "${text}")
+file(COPY_FILE ${OUTPUT}.tmp ${OUTPUT} ONLY_IF_DIFFERENT)

@@ -1,0 +1,204 @@
+// GPU resources of the OpenGL patch sampler (gl_patch_resources.hpp).
+#include "sampler/gl/gl_patch_resources.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "asperity/error.hpp"
+#include "sampler/gl/shaders.hpp"
+
+namespace asperity::glpatch {
+
+namespace {
+
+// A 2D texture with no mipmaps, bilinear filtering and the given wrap.
+void setupTexture(GLuint texture, GLint wrap, GLint filter) {
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+}
+
+}  // namespace
+
+void Atlas::ensure(int size, bool float_targets, int groups, int max_draw_buffers) {
+  if (size == size_ && float_targets == float_targets_ && groups == groups_) return;
+  size_ = size;
+  float_targets_ = float_targets;
+  groups_ = groups;
+  groups_per_pass_ = std::clamp(max_draw_buffers - 1, 1, kMaxGroupsPerPass);
+  // Coverage (R8), coefficients (RGBA8 or RGBA32F) and a shared depth buffer.
+  coverage_ = std::make_unique<gl::Texture>();
+  setupTexture(*coverage_, GL_CLAMP_TO_EDGE, GL_NEAREST);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R8, size, size, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+  mu_.clear();
+  mu_.resize(static_cast<size_t>(groups));
+  for (gl::Texture& t : mu_) {
+    setupTexture(t, GL_CLAMP_TO_EDGE, GL_NEAREST);
+    glTexImage2D(GL_TEXTURE_2D, 0, float_targets ? GL_RGBA32F : GL_RGBA8, size, size, 0, GL_RGBA,
+                 float_targets ? GL_FLOAT : GL_UNSIGNED_BYTE, nullptr);
+  }
+  depth_ = std::make_unique<gl::Renderbuffer>();
+  glBindRenderbuffer(GL_RENDERBUFFER, *depth_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, size, size);
+  // One frame buffer per sub-pass: coverage at attachment 0, its groups after it.
+  framebuffers_.clear();
+  framebuffers_.resize(static_cast<size_t>(subPasses()));
+  for (int s = 0; s < subPasses(); ++s) {
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffers_[static_cast<size_t>(s)]);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, *coverage_, 0);
+    const int first = s * groups_per_pass_;
+    const int count = std::min(groups_per_pass_, groups - first);
+    for (int g = 0; g < count; ++g) {
+      glFramebufferTexture2D(GL_FRAMEBUFFER, static_cast<GLenum>(GL_COLOR_ATTACHMENT1 + g),
+                             GL_TEXTURE_2D, mu_[static_cast<size_t>(first + g)], 0);
+    }
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, *depth_);
+    gl::checkFramebufferComplete("gl sampler atlas");
+  }
+  gl::checkGlError("gl sampler atlas allocation");
+}
+
+void Atlas::beginSubPass(int s) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffers_[static_cast<size_t>(s)]);
+  const int count = std::min(groups_per_pass_, groups_ - s * groups_per_pass_);
+  GLenum buffers[kMaxGroupsPerPass + 1];
+  for (int k = 0; k <= count; ++k) buffers[k] = static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + k);
+  glDrawBuffers(count + 1, buffers);
+  // Everything starts uncovered, zero and at the far plane.
+  glViewport(0, 0, size_, size_);
+  const GLfloat zero[4] = {0, 0, 0, 0};
+  for (int k = 0; k <= count; ++k) glClearBufferfv(GL_COLOR, k, zero);
+  const GLfloat far = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &far);
+}
+
+GLuint Atlas::framebufferOf(int g) const {
+  return framebuffers_[static_cast<size_t>(g < 0 ? 0 : g / groups_per_pass_)];
+}
+
+GLenum Atlas::attachmentOf(int g) const {
+  return g < 0 ? GL_COLOR_ATTACHMENT0
+               : static_cast<GLenum>(GL_COLOR_ATTACHMENT1 + g % groups_per_pass_);
+}
+
+void Readback::start(const Atlas& atlas, int rows) {
+  // Buffers sized for the whole atlas once, reused by every pass.
+  const auto pixels = static_cast<size_t>(atlas.size()) * static_cast<size_t>(atlas.size());
+  const size_t texel = atlas.floatTargets() ? 16 : 4;
+  if (!coverage_ || capacity_ != pixels * texel ||
+      groups_.size() != static_cast<size_t>(atlas.groups())) {
+    coverage_ = std::make_unique<gl::Buffer>();
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, *coverage_);
+    glBufferData(GL_PIXEL_PACK_BUFFER, static_cast<GLsizeiptr>(pixels), nullptr, GL_STREAM_READ);
+    groups_.clear();
+    groups_.resize(static_cast<size_t>(atlas.groups()));
+    for (gl::Buffer& b : groups_) {
+      glBindBuffer(GL_PIXEL_PACK_BUFFER, b);
+      glBufferData(GL_PIXEL_PACK_BUFFER, static_cast<GLsizeiptr>(pixels * texel), nullptr,
+                   GL_STREAM_READ);
+    }
+    capacity_ = pixels * texel;
+  }
+  // Asynchronous reads (into the bound pixel pack buffer), then the fence.
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  const int size = atlas.size();
+  coverage_bytes_ = static_cast<size_t>(size) * static_cast<size_t>(rows);
+  group_bytes_ = coverage_bytes_ * texel;
+  for (int g = -1; g < atlas.groups(); ++g) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, atlas.framebufferOf(g));
+    glReadBuffer(atlas.attachmentOf(g));
+    glBindBuffer(GL_PIXEL_PACK_BUFFER,
+                 g < 0 ? GLuint(*coverage_) : GLuint(groups_[static_cast<size_t>(g)]));
+    if (g < 0) {
+      glReadPixels(0, 0, size, rows, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+    } else {
+      glReadPixels(0, 0, size, rows, GL_RGBA, atlas.floatTargets() ? GL_FLOAT : GL_UNSIGNED_BYTE,
+                   nullptr);
+    }
+  }
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  fence_ = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+  gl::checkGlError("gl sampler read-back");
+}
+
+void Readback::map() {
+  // Wait for this pass's reads (flushing once), then map every buffer for reading.
+  const GLenum status = glClientWaitSync(fence_, GL_SYNC_FLUSH_COMMANDS_BIT, 60'000'000'000ull);
+  glDeleteSync(fence_);
+  fence_ = nullptr;
+  if (status == GL_TIMEOUT_EXPIRED || status == GL_WAIT_FAILED) {
+    throw Error("gl sampler: read-back fence did not signal");
+  }
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, *coverage_);
+  coverage_ptr_ = static_cast<const uint8_t*>(glMapBufferRange(
+      GL_PIXEL_PACK_BUFFER, 0, static_cast<GLsizeiptr>(coverage_bytes_), GL_MAP_READ_BIT));
+  group_ptrs_.assign(groups_.size(), nullptr);
+  for (size_t g = 0; g < groups_.size(); ++g) {
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, groups_[g]);
+    group_ptrs_[g] = glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0,
+                                      static_cast<GLsizeiptr>(group_bytes_), GL_MAP_READ_BIT);
+  }
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  if (coverage_ptr_ == nullptr) throw Error("gl sampler: could not map the read-back buffers");
+}
+
+void Readback::unmap() {
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, *coverage_);
+  glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
+  for (gl::Buffer& b : groups_) {
+    glBindBuffer(GL_PIXEL_PACK_BUFFER, b);
+    glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
+  }
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  coverage_ptr_ = nullptr;
+}
+
+Readback::~Readback() {
+  if (fence_ != nullptr) glDeleteSync(fence_);
+}
+
+GLuint TextureCache::normalMap(const std::shared_ptr<const NormalMap>& map) {
+  auto it = entries_.find(map.get());
+  if (it != entries_.end()) return it->second.texture;
+  // First use: the unit vectors as RGB32F (rows bottom-up, as NormalMap stores them).
+  Entry& e = entries_[map.get()];
+  e.keep_alive = map;
+  setupTexture(e.texture, GL_REPEAT, GL_LINEAR);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, map->width(), map->height(), 0, GL_RGB, GL_FLOAT,
+               map->texels().data());
+  gl::checkGlError("gl sampler normal map upload");
+  return e.texture;
+}
+
+GLuint TextureCache::mask(const std::shared_ptr<const GainMask>& mask) {
+  auto it = entries_.find(mask.get());
+  if (it != entries_.end()) return it->second.texture;
+  Entry& e = entries_[mask.get()];
+  e.keep_alive = mask;
+  setupTexture(e.texture, GL_REPEAT, GL_LINEAR);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, mask->width, mask->height, 0, GL_RED, GL_FLOAT,
+               mask->values.data());
+  gl::checkGlError("gl sampler mask upload");
+  return e.texture;
+}
+
+const gl::Program& Programs::get(int groups) {
+  auto it = programs_.find(groups);
+  if (it != programs_.end()) return it->second;
+  // The fragment stage: version, group count, the friction model, then the patch shader.
+  const std::string version = "#version 430 core\n";
+  const std::string vertex = version + std::string(gl_shaders::patch_vert);
+  const std::string fragment = version + "#define GROUPS " + std::to_string(groups) + "\n" +
+                               std::string(gl_shaders::ploughing) +
+                               std::string(gl_shaders::patch_frag);
+  gl::Program program("gl sampler patch (" + std::to_string(groups) + " groups)",
+                      {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}});
+  return programs_.emplace(groups, std::move(program)).first->second;
+}
+
+}  // namespace asperity::glpatch

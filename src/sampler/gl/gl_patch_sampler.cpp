@@ -1,0 +1,292 @@
+// The OpenGL patch sampler (gl_patch_sampler.hpp): per pass, collect both surfaces' triangles of
+// every contact into one vertex buffer, render each surface into its tile (Eq. 5 in the fragment
+// shader), read the atlas back asynchronously and average the tiles (Eqs. 8 and 7).
+#include "asperity/sampler/gl_patch_sampler.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "asperity/error.hpp"
+#include "asperity/friction/directions.hpp"
+#include "asperity/gl/context.hpp"
+#include "asperity/scene/friction_registry.hpp"
+#include "sampler/gl/gl_patch_resources.hpp"
+#include "sampler/patch_common.hpp"
+#include "sampler/patch_triangles.hpp"
+
+namespace asperity {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+// One draw: a run of triangles of one surface of one contact with one material.
+struct Draw {
+  int tile = 0;
+  float side = 1.0f;
+  float half_depth = 1.0f;
+  GLuint map = 0, mask = 0;
+  GLint first = 0;
+  GLsizei count = 0;
+};
+
+// What the averaging needs per contact of a pass.
+struct PassContact {
+  Contact* contact = nullptr;
+  PatchGains gains;
+};
+
+}  // namespace
+
+struct GlPatchSampler::Impl {
+  GlSamplerOptions options;
+  std::unique_ptr<gl::GlContext> context;  // declared first: destroyed last
+  glpatch::Atlas atlas;
+  std::array<glpatch::Readback, 2> readbacks;
+  std::array<std::vector<PassContact>, 2> pass_contacts;
+  glpatch::TextureCache textures;
+  glpatch::Programs programs;
+  std::unique_ptr<gl::VertexArray> vao;
+  std::unique_ptr<gl::Buffer> vbo;
+  patch::MeshCache meshes;
+  patch::GeometryScratch scratch;
+  std::vector<patch::PatchVertex> vertices;
+  std::vector<Draw> draws;
+  int max_draw_buffers = 8;
+  double patch_ms = 0.0, averaging_ms = 0.0;
+  int passes = 0;
+
+  void setupVertexArray();
+  void collect(std::span<const Body> bodies, std::span<Contact> contacts,
+               const FrictionSettings& settings, std::vector<PassContact>& out);
+  void render(const FrictionSettings& settings);
+  void average(int slot, const FrictionSettings& settings);
+};
+
+void GlPatchSampler::Impl::setupVertexArray() {
+  // Interleaved PatchVertex: position, uv, tangent, bitangent, normal.
+  vao = std::make_unique<gl::VertexArray>();
+  vbo = std::make_unique<gl::Buffer>();
+  glBindVertexArray(*vao);
+  glBindBuffer(GL_ARRAY_BUFFER, *vbo);
+  const auto stride = static_cast<GLsizei>(sizeof(patch::PatchVertex));
+  const struct {
+    GLuint index;
+    GLint size;
+    size_t offset;
+  } attributes[] = {{0, 3, offsetof(patch::PatchVertex, p)},
+                    {1, 2, offsetof(patch::PatchVertex, uv)},
+                    {2, 3, offsetof(patch::PatchVertex, t)},
+                    {3, 3, offsetof(patch::PatchVertex, b)},
+                    {4, 3, offsetof(patch::PatchVertex, n)}};
+  for (const auto& a : attributes) {
+    glEnableVertexAttribArray(a.index);
+    glVertexAttribPointer(a.index, a.size, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(a.offset));
+  }
+  glBindVertexArray(0);
+}
+
+void GlPatchSampler::Impl::collect(std::span<const Body> bodies, std::span<Contact> contacts,
+                                   const FrictionSettings& settings,
+                                   std::vector<PassContact>& out) {
+  vertices.clear();
+  draws.clear();
+  out.clear();
+  // Contact c of the pass: A in tile 2c, B in tile 2c + 1; one draw per shape with triangles.
+  for (size_t c = 0; c < contacts.size(); ++c) {
+    Contact& contact = contacts[c];
+    const patch::Volume volume = patch::makeVolume(contact, settings);
+    const patch::ShapeRange ranges[2] = {patch::shapesOf(bodies, contact, Side::A),
+                                         patch::shapesOf(bodies, contact, Side::B)};
+    for (int s = 0; s < 2; ++s) {
+      const patch::ShapeRange& range = ranges[s];
+      for (int k = range.first; k < range.last; ++k) {
+        const Shape& shape = range.body->shapes[static_cast<size_t>(k)];
+        const size_t first = vertices.size();
+        patch::collectTriangles(volume, shape, patch::shapePose(*range.body, k),
+                                s == 0 ? Side::A : Side::B, meshes, scratch, vertices);
+        if (vertices.size() == first) continue;
+        Draw d;
+        d.tile = static_cast<int>(2 * c) + s;
+        d.side = s == 0 ? -1.0f : 1.0f;
+        d.half_depth = static_cast<float>(volume.half_depth);
+        const auto& map = shape.surface.normal_map;
+        d.map = map && !map->empty() ? textures.normalMap(map) : 0;
+        d.mask = shape.surface.mask ? textures.mask(shape.surface.mask) : 0;
+        d.first = static_cast<GLint>(first);
+        d.count = static_cast<GLsizei>(vertices.size() - first);
+        draws.push_back(d);
+      }
+    }
+    out.push_back({&contact, patch::gainsOf(ranges[0], ranges[1], settings.mu0)});
+  }
+}
+
+void GlPatchSampler::Impl::render(const FrictionSettings& settings) {
+  // Upload this pass's triangles.
+  glBindVertexArray(*vao);
+  glBindBuffer(GL_ARRAY_BUFFER, *vbo);
+  glBufferData(GL_ARRAY_BUFFER,
+               static_cast<GLsizeiptr>(vertices.size() * sizeof(patch::PatchVertex)),
+               vertices.data(), GL_STREAM_DRAW);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);  // back faces are already discarded (patch_triangles)
+  glDisable(GL_BLEND);
+  const int r = settings.patch_resolution;
+  const int per_row = atlas.size() / r;
+  const std::vector<Vec2> dirs = sampleDirections(settings.directions);
+  // Each sub-pass renders every draw with its share of the direction groups.
+  for (int s = 0; s < atlas.subPasses(); ++s) {
+    const int first_group = s * atlas.groupsPerPass();
+    const int groups = std::min(atlas.groupsPerPass(), atlas.groups() - first_group);
+    const gl::Program& program = programs.get(groups);
+    program.use();
+    std::array<GLfloat, 2 * 4 * glpatch::kMaxGroupsPerPass> d{};
+    for (int k = 0; k < 4 * groups; ++k) {
+      d[static_cast<size_t>(2 * k)] =
+          static_cast<float>(dirs[static_cast<size_t>(4 * first_group + k)].x());
+      d[static_cast<size_t>(2 * k + 1)] =
+          static_cast<float>(dirs[static_cast<size_t>(4 * first_group + k)].y());
+    }
+    glUniform2fv(program.location("u_directions"), 4 * groups, d.data());
+    program.set("u_half_width", static_cast<float>(0.5 * settings.patch_width));
+    program.set("u_mu_max", settings.mu_max);
+    program.set("u_scale", atlas.floatTargets() ? 1.0f : 1.0f / settings.mu_max);
+    program.set("u_normal_map", 0);
+    program.set("u_mask", 1);
+    atlas.beginSubPass(s);
+    for (const Draw& draw : draws) {
+      // The tile is the viewport; the depth clip depends on the contact's phi.
+      glViewport((draw.tile % per_row) * r, (draw.tile / per_row) * r, r, r);
+      program.set("u_side", draw.side);
+      program.set("u_half_depth", draw.half_depth);
+      program.set("u_has_map", draw.map != 0 ? 1 : 0);
+      program.set("u_has_mask", draw.mask != 0 ? 1 : 0);
+      glActiveTexture(GL_TEXTURE0);
+      glBindTexture(GL_TEXTURE_2D, draw.map);
+      glActiveTexture(GL_TEXTURE1);
+      glBindTexture(GL_TEXTURE_2D, draw.mask);
+      glDrawArrays(GL_TRIANGLES, draw.first, draw.count);
+    }
+  }
+  glBindVertexArray(0);
+  gl::checkGlError("gl sampler render");
+}
+
+void GlPatchSampler::Impl::average(int slot, const FrictionSettings& settings) {
+  glpatch::Readback& rb = readbacks[static_cast<size_t>(slot)];
+  rb.map();
+  const Clock::time_point t0 = Clock::now();
+  const int r = settings.patch_resolution;
+  const int per_row = atlas.size() / r;
+  const size_t texel = atlas.floatTargets() ? 16 : 4;
+  const auto n = static_cast<size_t>(settings.directions);
+  // Each contact: its two tiles, Eq. 8 sums over their common coverage, then Eq. 7.
+  auto tileView = [&](int tile) {
+    patch::TileView v;
+    const size_t offset =
+        static_cast<size_t>((tile / per_row) * r) * static_cast<size_t>(atlas.size()) +
+        static_cast<size_t>((tile % per_row) * r);
+    v.coverage = rb.coverage() + offset;
+    for (int g = 0; g < atlas.groups(); ++g) {
+      v.groups[static_cast<size_t>(g)] = static_cast<const uint8_t*>(rb.group(g)) + offset * texel;
+    }
+    v.row_stride = static_cast<size_t>(atlas.size());
+    v.float_data = atlas.floatTargets();
+    v.byte_scale = settings.mu_max / 255.0f;
+    return v;
+  };
+  const std::vector<PassContact>& contacts = pass_contacts[static_cast<size_t>(slot)];
+  for (size_t c = 0; c < contacts.size(); ++c) {
+    std::array<double, kMaxDirections> sums_a{}, sums_b{};
+    const int count = patch::averageTiles(tileView(static_cast<int>(2 * c)),
+                                          tileView(static_cast<int>(2 * c + 1)), r,
+                                          settings.directions, sums_a.data(), sums_b.data());
+    patch::finishContact(*contacts[c].contact, std::span<const double>(sums_a.data(), n),
+                         std::span<const double>(sums_b.data(), n), count, contacts[c].gains);
+  }
+  rb.unmap();
+  averaging_ms += msSince(t0);
+}
+
+GlPatchSampler::GlPatchSampler(const GlSamplerOptions& options) : impl_(std::make_unique<Impl>()) {
+  if (options.atlas_size < 16 || options.atlas_size > 16384) {
+    throw Error("gl sampler: atlas_size must be in [16, 16384], got " +
+                std::to_string(options.atlas_size));
+  }
+  impl_->options = options;
+  if (!options.use_current_context) impl_->context = std::make_unique<gl::GlContext>();
+  glGetIntegerv(GL_MAX_DRAW_BUFFERS, &impl_->max_draw_buffers);
+  impl_->setupVertexArray();
+}
+
+GlPatchSampler::~GlPatchSampler() {
+  if (impl_->context) impl_->context->makeCurrent();
+}
+
+double GlPatchSampler::lastPatchTimeMs() const {
+  return impl_->patch_ms;
+}
+double GlPatchSampler::lastAveragingTimeMs() const {
+  return impl_->averaging_ms;
+}
+int GlPatchSampler::lastPassCount() const {
+  return impl_->passes;
+}
+
+std::string GlPatchSampler::renderer() const {
+  const auto* text = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return text != nullptr ? text : "";
+}
+
+void GlPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
+                                         const FrictionSettings& settings) {
+  validatePatchSettings(settings, "gl sampler", true);
+  Impl& im = *impl_;
+  if (im.context && !im.context->isCurrent()) im.context->makeCurrent();
+  const int r = settings.patch_resolution;
+  if (r > im.options.atlas_size) {
+    throw Error("gl sampler: patch_resolution " + std::to_string(r) + " exceeds the atlas (" +
+                std::to_string(im.options.atlas_size) + ")");
+  }
+  const Clock::time_point start = Clock::now();
+  im.averaging_ms = 0.0;
+  im.passes = 0;
+  im.atlas.ensure(im.options.atlas_size, im.options.float_targets, settings.directions / 4,
+                  im.max_draw_buffers);
+  const int per_row = im.atlas.size() / r;
+  const size_t per_pass = static_cast<size_t>(per_row * per_row / 2);
+  // Passes of at most per_pass contacts; pass p's read-back overlaps pass p + 1's rendering.
+  for (size_t first = 0; first < contacts.size(); first += per_pass) {
+    const int slot = im.passes % 2;
+    if (im.readbacks[static_cast<size_t>(slot)].pending()) im.average(slot, settings);
+    const size_t count = std::min(per_pass, contacts.size() - first);
+    im.collect(bodies, contacts.subspan(first, count), settings,
+               im.pass_contacts[static_cast<size_t>(slot)]);
+    im.render(settings);
+    const int tiles = static_cast<int>(2 * count);
+    im.readbacks[static_cast<size_t>(slot)].start(im.atlas, ((tiles + per_row - 1) / per_row) * r);
+    ++im.passes;
+  }
+  // Drain the passes still in flight.
+  for (int k = 0; k < 2; ++k) {
+    const int slot = (im.passes + k) % 2;
+    if (im.readbacks[static_cast<size_t>(slot)].pending()) im.average(slot, settings);
+  }
+  im.patch_ms = msSince(start) - im.averaging_ms;
+}
+
+void registerGlPatchSampler() {
+  registerFrictionProvider("gl", [] { return std::make_unique<GlPatchSampler>(); });
+}
+
+}  // namespace asperity

@@ -1,0 +1,73 @@
+// Eq. 5 per fragment for GROUPS x 4 sample directions (Sec. 4.2): the normal map (bilinear,
+// repeat) through the interpolated tangent frame gives the meso normal in the contact frame,
+// then its ploughing vector g (ploughing.glsl) and mu_k = gain * max(0, g . d_k), scaled by
+// u_scale (1 / mu_max for RGBA8 targets, 1 for float targets). Target 0 marks coverage.
+// GROUPS (1..7) is defined by the program that includes this file.
+in vec2 v_uv;
+in vec3 v_tangent;
+in vec3 v_bitangent;
+in vec3 v_normal;
+
+uniform sampler2D u_normal_map;
+uniform sampler2D u_mask;
+uniform bool u_has_map;
+uniform bool u_has_mask;
+uniform float u_side;
+uniform float u_mu_max;
+uniform float u_scale;
+uniform vec2 u_directions[28];  // this pass's directions, GROUPS x 4 used
+
+layout(location = 0) out vec4 o_coverage;
+layout(location = 1) out vec4 o_mu0;
+#if GROUPS > 1
+layout(location = 2) out vec4 o_mu1;
+#endif
+#if GROUPS > 2
+layout(location = 3) out vec4 o_mu2;
+#endif
+#if GROUPS > 3
+layout(location = 4) out vec4 o_mu3;
+#endif
+#if GROUPS > 4
+layout(location = 5) out vec4 o_mu4;
+#endif
+#if GROUPS > 5
+layout(location = 6) out vec4 o_mu5;
+#endif
+#if GROUPS > 6
+layout(location = 7) out vec4 o_mu6;
+#endif
+
+// Four coefficients of group `k` (directions 4k .. 4k + 3).
+vec4 group(vec2 g, float gain, int k) {
+  vec4 mu;
+  for (int c = 0; c < 4; ++c) mu[c] = max(0.0, dot(g, u_directions[4 * k + c]));
+  return mu * (gain * u_scale);
+}
+
+void main() {
+  vec3 m_tangent = u_has_map ? texture(u_normal_map, v_uv).xyz : vec3(0.0, 0.0, 1.0);
+  vec3 m = v_tangent * m_tangent.x + v_bitangent * m_tangent.y + v_normal * m_tangent.z;
+  vec2 g = ploughingVector(m, u_side, u_mu_max);
+  float gain = u_has_mask ? max(texture(u_mask, v_uv).r, 0.0) : 1.0;
+  o_coverage = vec4(1.0);
+  o_mu0 = group(g, gain, 0);
+#if GROUPS > 1
+  o_mu1 = group(g, gain, 1);
+#endif
+#if GROUPS > 2
+  o_mu2 = group(g, gain, 2);
+#endif
+#if GROUPS > 3
+  o_mu3 = group(g, gain, 3);
+#endif
+#if GROUPS > 4
+  o_mu4 = group(g, gain, 4);
+#endif
+#if GROUPS > 5
+  o_mu5 = group(g, gain, 5);
+#endif
+#if GROUPS > 6
+  o_mu6 = group(g, gain, 6);
+#endif
+}

@@ -1,0 +1,27 @@
+// One surface of one contact patch (SPEC 3, Sec. 4.1): vertices are already in the contact
+// frame (x along t, y along b, z along n, origin at the contact point); the orthographic view
+// maps the w x w footprint onto the tile (the viewport) and the depth clip |z| <= half_depth
+// onto the near and far planes. Depth grows away from the other body, so GL_LESS keeps the
+// fragment nearest to it (largest z for B, smallest for A).
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec2 a_uv;
+layout(location = 2) in vec3 a_tangent;
+layout(location = 3) in vec3 a_bitangent;
+layout(location = 4) in vec3 a_normal;
+
+uniform float u_half_width;
+uniform float u_half_depth;
+uniform float u_side;  // +1 surface B, -1 surface A
+
+out vec2 v_uv;
+out vec3 v_tangent;
+out vec3 v_bitangent;
+out vec3 v_normal;
+
+void main() {
+  gl_Position = vec4(a_position.xy / u_half_width, -u_side * a_position.z / u_half_depth, 1.0);
+  v_uv = a_uv;
+  v_tangent = a_tangent;
+  v_bitangent = a_bitangent;
+  v_normal = a_normal;
+}

@@ -1,0 +1,90 @@
+// The OpenGL sampler on this machine's OpenGL (Mesa llvmpipe headless in CI): the shared sampler
+// suite with RGBA8 and float targets, and agreement with the CPU reference sampler. No context
+// means failing tests, not skipped ones.
+#include "asperity/sampler/gl_patch_sampler.hpp"
+
+#include "asperity/sampler/cpu_patch_sampler.hpp"
+#include "sampler/sampler_suite.hpp"
+
+namespace asperity::sampler_test {
+namespace {
+
+// RGBA8 packing: one quantisation step of mu_max / 255 per coefficient.
+struct GlTraits {
+  static std::unique_ptr<FrictionProvider> make() { return std::make_unique<GlPatchSampler>(); }
+  static double tolerance() { return kDefaultMuMax / 255.0; }
+  static bool multipleOf4Only() { return true; }
+  static double curvedCoverageTolerance() { return 0.25; }
+};
+
+struct GlFloatTraits {
+  static std::unique_ptr<FrictionProvider> make() {
+    GlSamplerOptions o;
+    o.float_targets = true;
+    return std::make_unique<GlPatchSampler>(o);
+  }
+  static double tolerance() { return 1e-4; }
+  static bool multipleOf4Only() { return true; }
+  static double curvedCoverageTolerance() { return 0.25; }
+};
+
+INSTANTIATE_TYPED_TEST_SUITE_P(Gl, SamplerSuite, GlTraits);
+INSTANTIATE_TYPED_TEST_SUITE_P(GlFloat, SamplerSuite, GlFloatTraits);
+
+// Many textured box-corner contacts at assorted poses and frames: the GL sampler (several passes
+// of a small atlas, and 32 directions over two sub-passes) gives the CPU sampler's numbers.
+std::vector<Contact> corners(Scene& scene, int count) {
+  std::vector<Contact> contacts;
+  for (int i = 0; i < count; ++i) {
+    const double angle = 0.37 * i;
+    Contact c =
+        contactAt(Vec3(0.1 - 0.002 * (i % 5), 0.1 - 0.003 * (i % 3), 0.0), 1e-4 * (i % 4), angle);
+    contacts.push_back(c);
+  }
+  (void)scene;
+  return contacts;
+}
+
+void expectAgreement(GlSamplerOptions options, int n, double tolerance) {
+  Scene scene{{planeBody(roughMap(32, 1), 0.05, 1.0),
+               boxBody(Vec3(0.1, 0.1, 0.1), {Vec3(0, 0, 0.1)}, roughMap(32, 2), 0.08, 2.0)},
+              {}};
+  std::vector<Contact> cpu = corners(scene, 40), gl = cpu;
+  CpuPatchSampler reference;
+  GlPatchSampler sampler(options);
+  const FrictionSettings s = settings(n);
+  reference.computeCoefficients(scene.bodies, cpu, s);
+  sampler.computeCoefficients(scene.bodies, gl, s);
+  for (size_t i = 0; i < cpu.size(); ++i) {
+    EXPECT_NEAR(gl[i].covered_pixels, cpu[i].covered_pixels, 2) << "contact " << i;
+    for (int k = 0; k < n; ++k) {
+      EXPECT_NEAR(gl[i].mu.mu[k], cpu[i].mu.mu[k], tolerance) << "contact " << i << " k " << k;
+    }
+  }
+  if (options.atlas_size == 64) {
+    EXPECT_EQ(sampler.lastPassCount(), 5);  // 8 contacts per pass
+  }
+}
+
+TEST(GlPatchSampler, AgreesWithCpuOverSeveralPasses) {
+  GlSamplerOptions o;
+  o.atlas_size = 64;
+  expectAgreement(o, 4, 3.0 * 4.0 / 255.0);
+}
+
+TEST(GlPatchSampler, FloatTargetsAgreeWithCpuForManyDirections) {
+  GlSamplerOptions o;
+  o.float_targets = true;
+  expectAgreement(o, 32, 3e-3);
+}
+
+TEST(GlPatchSampler, ReportsRendererAndRejectsBadAtlas) {
+  GlPatchSampler sampler;
+  EXPECT_FALSE(sampler.renderer().empty());
+  GlSamplerOptions o;
+  o.atlas_size = 8;
+  EXPECT_THROW(GlPatchSampler bad(o), Error);
+}
+
+}  // namespace
+}  // namespace asperity::sampler_test
