@@ -8,7 +8,6 @@
 
 #include "asperity/friction/directions.hpp"
 #include "asperity/friction/fragment_model.hpp"
-#include "asperity/scene/friction_registry.hpp"
 #include "sampler/patch_common.hpp"
 #include "sampler/patch_geometry.hpp"
 #include "sampler/patch_shade.hpp"
@@ -168,10 +167,6 @@ void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::spa
   for (Contact& c : contacts) st.sample(bodies, c, settings, nullptr);
   patch_ms_ = st.patch_ms;
   averaging_ms_ = st.averaging_ms;
-}
-
-void registerCpuPatchSampler() {
-  registerFrictionProvider("cpu", [] { return std::make_unique<CpuPatchSampler>(); });
 }
 
 }  // namespace asperity

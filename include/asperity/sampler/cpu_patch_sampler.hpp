@@ -9,6 +9,7 @@
 // Surfaces: a contact's shape_a / shape_b (all shapes of the body when -1). k_A, k_B are the
 // gains of those shapes' surfaces (of the first shape when -1); gain masks multiply each
 // fragment. Single-threaded; scratch buffers and mesh BVHs are kept between calls.
+// Registered as "cpu" in the scene's friction provider registry.
 #pragma once
 
 #include <memory>
@@ -41,9 +42,5 @@ class CpuPatchSampler : public FrictionProvider {
   double patch_ms_ = 0.0;
   double averaging_ms_ = 0.0;
 };
-
-// Registers "cpu" (a CpuPatchSampler) with the scene's friction provider registry
-// (scene/friction_registry.hpp); front ends call it once before loading scenes.
-void registerCpuPatchSampler();
 
 }  // namespace asperity
