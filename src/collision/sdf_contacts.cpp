@@ -61,6 +61,7 @@ std::vector<SdfHit> sdfHits(const DistanceFn& field, const Transform& field_worl
   std::vector<SdfHit> hits;
   for (size_t i = 0; i < points.size(); ++i) {
     const Vec3 local = to_field.apply(points[i]);
+    if (!query.bounds.contains(local)) continue;
     const SignedDistanceField::Sample s = field(local);
     if (!s.inside_grid || s.distance >= query.max_distance) continue;
     SdfHit hit;

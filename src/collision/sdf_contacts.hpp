@@ -35,6 +35,8 @@ struct SdfQuery {
   double max_distance = 0.0;  // report points with distance below this (m)
   int max_hits = 32;          // deepest first
   double min_spacing = 0.0;   // kept hits lie at least this far apart (m)
+  // Where the field can report anything (field frame); points outside are skipped unseen.
+  Eigen::AlignedBox3d bounds = Eigen::AlignedBox3d(Vec3::Constant(-1e300), Vec3::Constant(1e300));
 };
 
 // A signed distance in the field shape's frame: a grid field or an exact primitive.

@@ -34,6 +34,17 @@ double largestExtent(const Shape& s) {
   return (hi - lo).maxCoeff();
 }
 
+// The box around a primitive grown by `grow` on every side (shape frame).
+Eigen::AlignedBox3d primitiveBounds(const Shape& s, double grow) {
+  Vec3 h = Vec3::Zero();
+  if (s.type == ShapeType::Box) h = s.half_extents;
+  if (s.type == ShapeType::Sphere) h = Vec3::Constant(s.radius);
+  if (s.type == ShapeType::Capsule) h = Vec3(s.radius, s.radius, s.radius + s.half_height);
+  if (s.type == ShapeType::Cylinder) h = Vec3(s.radius, s.radius, s.half_height);
+  h.array() += grow;
+  return Eigen::AlignedBox3d(-h, h);
+}
+
 // A primitive's surface as triangles (the renderer's tessellation, in double).
 TriangleMeshData primitiveMesh(const Shape& shape) {
   const ShapeMesh m = buildShapeMesh(shape);
@@ -90,18 +101,21 @@ void queryContacts(const ShapeRecord& field, const ShapeRecord& query, bool fiel
   // The field: grid for meshes, exact for primitives; spacing and reach in its cells.
   DistanceFn distance;
   double cell = largestExtent(field.shape) / settings.sdf_resolution;
+  SdfQuery q;
   if (field.closed_mesh) {
     const SignedDistanceField& grid = res.field(field);
     distance = [&grid](const Vec3& p) { return grid.sample(p); };
     cell = grid.cellSize();
+    const Vec3 span = cell * Vec3(grid.nodes(0) - 1, grid.nodes(1) - 1, grid.nodes(2) - 1);
+    q.bounds = Eigen::AlignedBox3d(grid.origin(), grid.origin() + span);
   } else {
     distance = [&field](const Vec3& p) { return primitiveSample(field.shape, p); };
   }
-  SdfQuery q;
   q.max_distance =
       settings.report_gaps ? (settings.contact_margin > 0 ? settings.contact_margin : cell) : 0.0;
   q.max_hits = settings.sdf_max_contacts;
   q.min_spacing = settings.sdf_min_spacing * cell;
+  if (!field.closed_mesh) q.bounds = primitiveBounds(field.shape, std::max(q.max_distance, 0.0));
   const SurfaceSamples& samples = res.samples(query);
   const ShapeRecord& ra = field_is_a ? field : query;
   const ShapeRecord& rb = field_is_a ? query : field;

@@ -247,8 +247,8 @@ TEST(CollisionDetector, SphereAgainstHullFace) {
   EXPECT_TRUE((c.witness_b - Vec3(0.02, 0.03, 0.1)).norm() < 1e-5);
 }
 
-TEST(CollisionDetector, DynamicMeshCollidesAsItsHull) {
-  // A dynamic closed cube mesh on the ground plane behaves as its convex hull.
+TEST(CollisionDetector, DynamicMeshOnPlaneTouchesWithItsVertices) {
+  // A dynamic closed cube mesh on the ground plane: its four bottom vertices.
   Body cube = meshBody(boxMesh(Vec3::Constant(0.1)), BodyType::Dynamic, Vec3(0, 0, 0.099));
   const auto contacts = detectOnce({groundPlane(), cube});
   ASSERT_EQ(contacts.size(), 4u);
