@@ -1,0 +1,36 @@
+// asperity-viewer SCENE.json: interactive viewer (see docs/rendering.md for the controls).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+
+#include "asperity/error.hpp"
+#include "viewer.hpp"
+
+int main(int argc, char** argv) {
+  asperity::viewer::ViewerOptions options;
+  CLI::App app{"Asperity viewer: simulate a scene interactively.", "asperity-viewer"};
+  app.add_option("scene", options.scene, "Scene file (JSON)")->required();
+  app.add_option("--sampler", options.sampler, "Friction sampler replacing the scene's");
+  app.add_option("--width", options.width, "Window width")->check(CLI::Range(64, 8192));
+  app.add_option("--height", options.height, "Window height")->check(CLI::Range(64, 8192));
+  app.add_option("--samples", options.samples, "MSAA samples")->check(CLI::Range(1, 16));
+  app.add_option("--frames", options.frames, "Quit after N frames (prints the frame rate)")
+      ->check(CLI::Range(1, 1000000));
+  app.add_option("--screenshot", options.screenshot, "With --frames: PNG of the last frame");
+  bool paused = false;
+  app.add_flag("--paused", paused, "Start paused");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  options.play = !paused;
+  // One line on stderr for any error, non-zero exit.
+  try {
+    asperity::viewer::Viewer viewer(options);
+    viewer.run();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "asperity-viewer: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
