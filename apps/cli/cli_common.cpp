@@ -90,6 +90,15 @@ CLI::Validator positiveNumber() {
       "POSITIVE");
 }
 
+CLI::Validator notNegative() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        if (!text.empty() && text[0] == '-') return "value " + text + " is negative";
+        return {};
+      },
+      "NOT NEGATIVE");
+}
+
 CLI::Validator numberInRange(double min, double max) {
   std::ostringstream range;
   range << "[" << min << ", " << max << "]";

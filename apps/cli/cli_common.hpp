@@ -26,6 +26,8 @@ int runCli(CLI::App& app, int argc, const char* const* argv);
 CLI::Validator finiteNumber();
 // Accepts finite numbers > 0.
 CLI::Validator positiveNumber();
+// Rejects a leading minus sign (CLI11 wraps "-1" around for unsigned options).
+CLI::Validator notNegative();
 // Accepts finite numbers in [min, max] (NaN rejected), with a message naming the bounds.
 CLI::Validator numberInRange(double min, double max);
 

@@ -100,7 +100,7 @@ void registerTextureCommand(CLI::App& app) {
   sub->add_option("--size", opt->size, "Texels per side (square)")
       ->check(CLI::Range(1, kMaxTextureSize))
       ->capture_default_str();
-  sub->add_option("--seed", opt->seed, "Random seed")->capture_default_str();
+  sub->add_option("--seed", opt->seed, "Random seed")->check(notNegative())->capture_default_str();
   sub->add_option("--out", opt->out, "Output PNG file");
   sub->add_option("--bits", opt->bits, "Bits per channel")
       ->check(CLI::IsMember({8, 16}))

@@ -111,6 +111,12 @@ TEST(TextureCommand, BadSizeIsNamed) {
     expectOneLineError(runCli({"texture", "gaussian", "--size", size, "--out", out}), "--size");
 }
 
+TEST(TextureCommand, BadSeedIsNamed) {
+  const std::string out = test::tempDir("tex") + "/x.png";
+  for (const char* seed : {"-1", "nan", "1.5"})
+    expectOneLineError(runCli({"texture", "gaussian", "--seed", seed, "--out", out}), "--seed");
+}
+
 TEST(TextureCommand, BadBitsIsNamed) {
   const std::string out = test::tempDir("tex") + "/x.png";
   expectOneLineError(runCli({"texture", "gaussian", "--bits", "12", "--out", out}), "--bits");
