@@ -1,0 +1,154 @@
+// `asperity run`: the CSV's header and row count, byte-identical reruns, the hash, the stats
+// file, setting overrides (checked against edited scene files), and one test per bad input.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+
+#include "cli/cli_test_support.hpp"
+
+namespace asperity {
+namespace {
+
+using test::expectOneLineError;
+using test::runCli;
+using test::slurpBinary;
+
+const char* kHeader = "step,time,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n";
+
+std::string example(const std::string& name) {
+  return test::sourcePath("scenes/examples/" + name);
+}
+
+// Lines of a text (without the final newline's empty line).
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream s(text);
+  for (std::string line; std::getline(s, line);) out.push_back(line);
+  return out;
+}
+
+// The hash `asperity run` prints, or "" on failure.
+std::string hashOf(const std::vector<std::string>& args) {
+  const auto r = runCli(args);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return r.out;
+}
+
+TEST(RunCommand, CsvHeaderAndRows) {
+  const std::string out = test::tempDir("run") + "/traj.csv";
+  const auto r =
+      runCli({"run", example("minimal.json"), "--steps", "20", "--every", "5", "--out", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string csv = slurpBinary(out);
+  EXPECT_EQ(csv.rfind(kHeader, 0), 0u);
+  // Two bodies, steps 0, 5, 10, 15, 20.
+  const std::vector<std::string> rows = lines(csv);
+  ASSERT_EQ(rows.size(), 1u + 2u * 5u);
+  EXPECT_EQ(rows[1].rfind("0,0,ground,", 0), 0u) << rows[1];
+  EXPECT_EQ(rows[2].rfind("0,0,box,0,0,0.1,1,0,0,0,1,0,0,0,0,0", 0), 0u) << rows[2];
+  EXPECT_EQ(rows[9].rfind("20,", 0), 0u) << rows[9];
+  for (const std::string& row : rows) EXPECT_EQ(std::count(row.begin(), row.end(), ','), 15);
+}
+
+TEST(RunCommand, SecondsGiveCeilOfTimeOverDt) {
+  const std::string out = test::tempDir("run") + "/traj.csv";
+  // dt = 0.01: 0.055 s is 6 steps; rows for steps 0..6 of 2 bodies.
+  const auto r = runCli({"run", example("minimal.json"), "--seconds", "0.055", "--out", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(lines(slurpBinary(out)).size(), 1u + 2u * 7u);
+}
+
+TEST(RunCommand, RerunsAreByteIdentical) {
+  const std::string dir = test::tempDir("run");
+  for (const char* file : {"a.csv", "b.csv"}) {
+    const auto r =
+        runCli({"run", example("loads.json"), "--steps", "60", "--out", dir + "/" + file});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  EXPECT_EQ(slurpBinary(dir + "/a.csv"), slurpBinary(dir + "/b.csv"));
+}
+
+TEST(RunCommand, HashIsSixteenHexDigitsAndRepeats) {
+  const std::string a = hashOf({"run", example("joints.json"), "--steps", "50", "--hash"});
+  const std::string b = hashOf({"run", example("joints.json"), "--steps", "50", "--hash"});
+  EXPECT_TRUE(std::regex_match(a, std::regex("[0-9a-f]{16}\n"))) << a;
+  EXPECT_EQ(a, b);
+  EXPECT_NE(a, hashOf({"run", example("joints.json"), "--steps", "51", "--hash"}));
+}
+
+TEST(RunCommand, StatsHoldPerStepAverages) {
+  const std::string path = test::tempDir("run") + "/stats.json";
+  const auto r = runCli({"run", example("minimal.json"), "--steps", "30", "--stats", path});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json stats = nlohmann::json::parse(slurpBinary(path));
+  EXPECT_EQ(stats["steps"], 30);
+  EXPECT_EQ(stats["sampler"], "cone");
+  const nlohmann::json& per_step = stats["per_step"];
+  for (const char* key :
+       {"contacts", "fallbacks", "drivers_ms", "collide_ms", "frames_ms", "friction_ms", "patch_ms",
+        "averaging_ms", "solve_ms", "integrate_ms", "total_ms"})
+    EXPECT_TRUE(per_step.contains(key)) << key;
+  // A box resting on a plane touches it at its four bottom corners.
+  EXPECT_GT(per_step["contacts"].get<double>(), 3.0);
+  EXPECT_LE(per_step["contacts"].get<double>(), 4.0);
+}
+
+// The scene file with settings[key] = value, written to a temporary folder beside copies of
+// nothing else (the scene must not use relative files).
+std::string editedScene(const std::string& name, const std::string& key, const std::string& value) {
+  nlohmann::json j = nlohmann::json::parse(slurpBinary(example(name)));
+  j["settings"][key] = value;
+  const std::string path = test::tempDir("run") + "/" + name;
+  std::ofstream(path) << j.dump(2);
+  return path;
+}
+
+TEST(RunCommand, FrictionAndFrameOverrideTheScene) {
+  // settings.json uses the polygon limit and the world frame, on an anisotropic box.
+  const std::string base = example("settings.json");
+  const std::vector<std::string> steps = {"--steps", "40", "--hash"};
+  auto run = [&](std::vector<std::string> args) {
+    args.insert(args.end(), steps.begin(), steps.end());
+    return hashOf(args);
+  };
+  const std::string polygon = run({"run", base});
+  const std::string coulomb = run({"run", base, "--friction", "coulomb"});
+  EXPECT_NE(polygon, coulomb);
+  EXPECT_EQ(coulomb, run({"run", editedScene("settings.json", "friction", "coulomb")}));
+  const std::string auto_frame = run({"run", base, "--frame", "auto"});
+  EXPECT_EQ(auto_frame, run({"run", editedScene("settings.json", "frame", "auto")}));
+  EXPECT_EQ(run({"run", base, "--sampler", "constant"}),
+            run({"run", editedScene("settings.json", "sampler", "constant")}));
+}
+
+TEST(RunCommand, BadValuesAreOneLineErrors) {
+  const std::string scene = example("minimal.json");
+  expectOneLineError(runCli({"run", scene, "--friction", "cone"}), "--friction");
+  expectOneLineError(runCli({"run", scene, "--frame", "tangent"}), "--frame");
+  expectOneLineError(runCli({"run", scene, "--every", "0"}), "--every");
+  expectOneLineError(runCli({"run", scene, "--steps", "-1"}), "--steps");
+  expectOneLineError(runCli({"run", scene, "--seconds", "nan"}), "--seconds");
+  expectOneLineError(runCli({"run", scene, "--steps", "3", "--seconds", "1"}), "--seconds");
+  expectOneLineError(runCli({"run", scene, "--sampler", "velvet"}), "--sampler: unknown");
+  expectOneLineError(runCli({"run", scene, "--steps", "1", "--out", "/nonexistent/dir/t.csv"}),
+                     "--out");
+  expectOneLineError(runCli({"run"}), "SCENE");
+}
+
+TEST(RunCommand, BadSceneFilesAreOneLineErrors) {
+  const auto missing = runCli({"run", "/nonexistent/scene.json"});
+  EXPECT_EQ(missing.exit_code, 1);
+  expectOneLineError(missing, "/nonexistent/scene.json: cannot open file");
+  const std::string path = test::tempDir("run") + "/bad.json";
+  std::ofstream(path)
+      << R"({"bodies": [{"name": "b", "shapes": [{"type": "box", "half_extents": [0.1, -0.1, 0.1]}]}]})";
+  const auto bad = runCli({"run", path});
+  EXPECT_EQ(bad.exit_code, 1);
+  expectOneLineError(
+      bad, path + ": /bodies/0/shapes/0/half_extents/1: must be a positive number, got -0.1");
+}
+
+}  // namespace
+}  // namespace asperity
