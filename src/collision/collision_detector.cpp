@@ -36,6 +36,7 @@
 #include "asperity/error.hpp"
 #include "collision/bullet_shapes.hpp"
 #include "collision/contact_geometry.hpp"
+#include "collision/mesh_features.hpp"
 #include "collision/plane_contacts.hpp"
 #include "collision/sdf_pairs.hpp"
 #include "collision/shape_record.hpp"
@@ -102,6 +103,7 @@ struct CollisionDetector::Impl {
   std::vector<BodyType> body_types;
   std::set<std::pair<BodyId, BodyId>> ignored;
   SdfResources sdf;
+  std::map<std::shared_ptr<const TriangleMeshData>, std::unique_ptr<MeshFeatures>> mesh_features;
 
   std::unique_ptr<btDefaultCollisionConfiguration> config;
   std::unique_ptr<Dispatcher> dispatcher;
@@ -164,6 +166,18 @@ struct CollisionDetector::Impl {
   // How far apart gap contacts of this shape are reported (report_gaps only).
   double gapReach(const ShapeRecord& r) const {
     return settings.contact_margin > 0 ? settings.contact_margin : 0.02 * shapeSize(r.shape);
+  }
+
+  // Triangle lookup for dynamic meshes and hulls with triangles (built on first use).
+  const MeshFeatures* featuresOf(const ShapeRecord& r) {
+    const bool dynamic_mesh =
+        r.shape.type == ShapeType::TriangleMesh && r.body_type == BodyType::Dynamic;
+    const bool hull_mesh =
+        r.shape.type == ShapeType::ConvexHull && !r.shape.mesh->triangles.empty();
+    if (!dynamic_mesh && !hull_mesh) return nullptr;
+    auto& f = mesh_features[r.shape.mesh];
+    if (!f) f = std::make_unique<MeshFeatures>(r.shape.mesh);
+    return f.get();
   }
 
   void createWorld();
@@ -255,6 +269,15 @@ void CollisionDetector::Impl::collectManifolds() {
       c.feature_b = swap ? f0 : f1;
       c.witness_a = onTrueSurface(ra, c.witness_a, -c.normal, c.feature_a);
       c.witness_b = onTrueSurface(rb, c.witness_b, c.normal, c.feature_b);
+      // Hull contacts of meshes: the mesh triangle nearest to the witness point.
+      if (const MeshFeatures* f = featuresOf(ra)) {
+        c.feature_a = f->nearestTriangle(ra.world.applyInverse(c.witness_a),
+                                         ra.world.rotation.conjugate() * -c.normal);
+      }
+      if (const MeshFeatures* f = featuresOf(rb)) {
+        c.feature_b = f->nearestTriangle(rb.world.applyInverse(c.witness_b),
+                                         rb.world.rotation.conjugate() * c.normal);
+      }
       finishContact(c, ra.shape, ra.world, rb.shape, rb.world);
       if (c.phi < 0 && !settings.report_gaps) continue;
       c.key = contactKey(c, point_id);
@@ -281,6 +304,9 @@ void CollisionDetector::Impl::collectPlane(int r0, int r1) {
     c.phi = -p.distance;
     c.point = 0.5 * (c.witness_a + c.witness_b);
     if (ra.shape.type == ShapeType::Box) c.feature_a = boxFace(ra.world, -c.normal);
+    if (const MeshFeatures* f = featuresOf(ra)) {
+      c.feature_a = f->triangleAtVertex(p.id, ra.world.rotation.conjugate() * -c.normal);
+    }
     c.key = contactKey(c, static_cast<uint64_t>(p.id) | kPlanePointTag);
     contacts.push_back(c);
   }

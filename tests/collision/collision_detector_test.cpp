@@ -252,7 +252,26 @@ TEST(CollisionDetector, DynamicMeshOnPlaneTouchesWithItsVertices) {
   Body cube = meshBody(boxMesh(Vec3::Constant(0.1)), BodyType::Dynamic, Vec3(0, 0, 0.099));
   const auto contacts = detectOnce({groundPlane(), cube});
   ASSERT_EQ(contacts.size(), 4u);
-  for (const Contact& c : contacts) EXPECT_TRUE(near(c.phi, 1e-3, 0, 1e-5));
+  for (const Contact& c : contacts) {
+    EXPECT_TRUE(near(c.phi, 1e-3, 0, 1e-5));
+    EXPECT_TRUE(c.feature_a == 0 || c.feature_a == 1) << c.feature_a;  // the -z face
+  }
+}
+
+TEST(CollisionDetector, OpenDynamicMeshOnBoxReportsItsTriangles) {
+  // A box mesh without its top (not closed): Bullet collides its hull; the contacts still
+  // name the mesh's bottom triangles.
+  auto open = std::make_shared<TriangleMeshData>(*boxMesh(Vec3::Constant(0.1)));
+  open->triangles.erase(open->triangles.begin() + 2, open->triangles.begin() + 4);
+  Body table = boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0);
+  table.type = BodyType::Static;
+  const auto contacts = detectOnce({table, meshBody(open, BodyType::Dynamic, Vec3(0, 0, 0.099))});
+  ASSERT_GE(contacts.size(), 3u);
+  for (const Contact& c : contacts) {
+    EXPECT_TRUE(near(c.phi, 1e-3, 0, 1e-5));
+    EXPECT_TRUE(c.feature_a == 0 || c.feature_a == 1) << c.feature_a;
+    EXPECT_EQ(c.feature_b, 4);
+  }
 }
 
 TEST(CollisionDetector, CompoundBodyKeepsShapeIndices) {

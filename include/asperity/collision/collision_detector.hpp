@@ -7,7 +7,8 @@
 // the lower id. Body ids are indices into the span given to setBodies/detect.
 //
 // Identities: shape_a/shape_b index the body's shapes; feature_a/feature_b hold the triangle
-// index for static triangle meshes and signed-distance contacts, the face index for boxes
+// index for triangle meshes (and hulls given with triangles: the triangle nearest to the
+// witness point, or one using the touching vertex), the face index for boxes
 // (2 * axis + (outward normal along the negative axis ? 1 : 0), axes x, y, z of the box) and
 // -1 otherwise. `key` stays the same for as long as the contact persists (Bullet's persistent
 // manifolds keep the points alive across calls; signed-distance contacts are keyed by vertex).
