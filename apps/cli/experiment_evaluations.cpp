@@ -207,7 +207,7 @@ Outcome evaluateWorm(const Experiment& e, const RunOptions& options) {
     out.passed = out.passed && ok;
     out.explanation += (out.explanation.empty() ? "" : "; ") + label + ": centre moved " +
                        num(advance) + " m in " + num(rec.time.back()) + " s, least per period " +
-                       num(sign * worst) + " m" + (ok ? "" : " (NOT a steady crawl that way)");
+                       num(worst) + " m" + (ok ? "" : " (NOT a steady crawl that way)");
   }
   out.plots.push_back(plot);
   return out;
@@ -259,6 +259,37 @@ std::vector<Experiment> experimentEntries() {
                   "the worm crawls the other way",
                   {{"crawling_worm.json", 6.0, worm}, {"crawling_worm_reversed.json", 6.0, worm}},
                   evaluateWorm});
+  list.push_back({"sawtooth_plane_rotated",
+                  "Sawtooth plane turned 45 degrees (frame modes)",
+                  "Sec. 5.5: with the sawtooth plane turned 45 degrees about the vertical, frames "
+                  "aligned with the world axes make the friction nearly isotropic; frames aligned "
+                  "automatically with the sliding direction show the anisotropy and asymmetry.",
+                  "with --frame auto and --frame texture: along > ramp > steep (steep held, ramp "
+                  "sliding); with --frame world that ordering is lost",
+                  {{"sawtooth_plane_rotated.json", 3.0, std::nullopt}},
+                  evaluateSawtoothRotated});
+  const PaperRow bolas_rough = paperRow(1, 1, 0.1, 0.02, 1, 45, 41.6, 1.4, 6.5);
+  const PaperRow bolas_smooth = paperRow(1, 1, 0.1, 0.02, 1, 23, 34.1, 0.7, 3.2);
+  list.push_back({"chain_bolas",
+                  "Chain bolas",
+                  "Sec. 5.1, Figs. 10 and 11: a chain bolas thrown at a rod grips and wraps around "
+                  "the rough rod (Ra 1 mm) and cannot get a grip on the smooth one (Ra 0.01 mm).",
+                  "after 3 s the chain's centre of mass is within 0.15 m of the rough rod's axis, "
+                  "and more than 0.15 m below the smooth rod",
+                  {{"chain_bolas_rough.json", 3.0, bolas_rough},
+                   {"chain_bolas_smooth.json", 3.0, bolas_smooth}},
+                  evaluateChainBolas});
+  const PaperRow bunnies = paperRow(4, 1, 0.1, 0.02, 10, 10, 3.5, 0.13, 1.7);
+  list.push_back({"tumbling_bunnies",
+                  "Tumbling bunnies",
+                  "Sec. 5.4, Fig. 16: bunnies launched down an incline that is smooth but for an "
+                  "embossed teapot logo (plane gain 10): the rough stone bunny sticks at once and "
+                  "falls over; the metal and plastic bunnies slide, then tumble at the logo's "
+                  "ridge.",
+                  "the stone bunny travels least (under 0.25 m) and rotates over 45 degrees; metal "
+                  "and plastic stay under 45 degrees until they reach the logo and exceed it on it",
+                  {{"tumbling_bunnies.json", 2.5, bunnies}},
+                  evaluateBunnies});
   return list;
 }
 

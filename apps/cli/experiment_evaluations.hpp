@@ -45,4 +45,10 @@ struct SawtoothMeasures {
 };
 SawtoothMeasures measureSawtooth(const Recording& rec);
 
+// Evaluations in experiment_evaluations_more.cpp.
+Outcome evaluateChainBolas(const Experiment& e, const RunOptions& options);
+Outcome evaluateSawtoothRotated(const Experiment& e, const RunOptions& options);
+// Evaluations in experiment_evaluations_mesh.cpp.
+Outcome evaluateBunnies(const Experiment& e, const RunOptions& options);
+
 }  // namespace asperity::experiments

@@ -2,6 +2,7 @@
 // paper's Table 1 rows and the per-experiment measurements, lives in experiment_evaluations.cpp.
 #include "experiment_outcomes.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -59,6 +60,12 @@ RunProfile startProfile(const std::string& file, const SceneDesc& scene, double 
   p.dt = scene.settings.dt;
   p.mu0 = scene.settings.friction.mu0;
   p.patch_width = scene.settings.friction.patch_width;
+  // Gains k of Eq. 7: moving bodies' surfaces are the paper's A, the fixed ones its B.
+  for (const BodyDesc& b : scene.bodies)
+    for (const Shape& shape : b.shapes) {
+      double& k = b.type == BodyType::Dynamic ? p.k_a : p.k_b;
+      k = std::max(k, shape.surface.gain);
+    }
   p.steps = stepsFor(seconds, scene.settings.dt);
   return p;
 }
@@ -135,6 +142,31 @@ const Experiment& findExperiment(const std::string& id) {
     known += (known.empty() ? "" : ", ") + e.id;
   }
   throw Error("unknown experiment '" + id + "' (known: " + known + ")");
+}
+
+std::vector<std::string> catalogScenePaths(const std::string& scenes_dir) {
+  std::vector<std::string> paths;
+  for (const Experiment& e : experimentCatalog())
+    for (const SceneRun& run : e.scenes)
+      paths.push_back((std::filesystem::path(scenes_dir) / run.file).string());
+  return paths;
+}
+
+TableRow benchScene(const std::string& path, const std::string& sampler) {
+  // The experiment that owns this file name gives the duration, title and paper row.
+  const std::string file = std::filesystem::path(path).filename().string();
+  TableRow row;
+  row.title = file;
+  double seconds = 1.0;
+  for (const Experiment& e : experimentCatalog())
+    for (const SceneRun& run : e.scenes)
+      if (run.file == file) {
+        row.title = e.title + " (" + file + ")";
+        row.paper = run.paper;
+        seconds = run.seconds;
+      }
+  row.ours = profileScene(path, seconds, sampler);
+  return row;
 }
 
 Outcome runExperiment(const std::string& id, const RunOptions& options) {

@@ -38,6 +38,8 @@ struct RunProfile {
   double dt = 0.0;  // s
   double mu0 = 0.0;
   double patch_width = 0.0;  // m
+  double k_a = 0.0;          // largest gain on a dynamic body's surface
+  double k_b = 0.0;          // largest gain on a static or kinematic body's surface
   double contacts = 0.0;
   double fallbacks = 0.0;
   double total_ms = 0.0;
@@ -129,5 +131,16 @@ Recording simulate(const std::string& file, double seconds, const RunOptions& op
 
 // Runs one scene for `seconds` (no recording) and returns its per-step profile.
 RunProfile profileScene(const std::string& path, double seconds, const std::string& sampler);
+
+// One row of our Table 1: a scene's parameters and per-step timings beside the paper's.
+struct TableRow {
+  std::string title;  // the experiment's title (and variant), or the file name
+  RunProfile ours;
+  std::optional<PaperRow> paper;
+};
+// Runs a scene file as Table 1 does: for its experiment's duration (1 s if it belongs to none).
+TableRow benchScene(const std::string& path, const std::string& sampler);
+// Every experiment scene of the catalog, from scenes_dir.
+std::vector<std::string> catalogScenePaths(const std::string& scenes_dir);
 
 }  // namespace asperity::experiments

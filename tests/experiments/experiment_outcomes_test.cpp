@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "asperity/error.hpp"
 #include "asperity/scene/scene.hpp"
 #include "support/test_support.hpp"
@@ -100,6 +102,37 @@ TEST(CrawlingWorm, CrawlsForwardSteadilyAndBackwardWithTurnedTexture) {
   EXPECT_GT(out.value("least_period_forward"), 0.0);
   EXPECT_LT(out.value("advance_reversed"), -0.05);
   EXPECT_GT(out.value("least_period_reversed"), 0.0);
+  EXPECT_TRUE(out.passed) << out.explanation;
+}
+
+// Sec. 5.5: planes turned 45 degrees; auto and texture frames recover along > ramp > steep,
+// world frames (diagonal to the ridges) lose it: the box pulled along the ridges is held back.
+TEST(SawtoothPlaneRotated, AutoAndTextureFramesRecoverTheOrderingWorldDoesNot) {
+  const Outcome out = runExperiment("sawtooth_plane_rotated", options());
+  for (const std::string mode : {"auto", "texture"}) {
+    EXPECT_GT(out.value(mode + "_along"), out.value(mode + "_ramp")) << mode;
+    EXPECT_GT(out.value(mode + "_ramp"), 0.1) << mode;
+    EXPECT_LT(out.value(mode + "_steep"), 0.05) << mode;
+  }
+  // The aligned frames give the unrotated scene's glide along the ridges, world frames far less.
+  EXPECT_LT(out.value("world_along"), 0.6 * out.value("auto_along"));
+  EXPECT_TRUE(out.passed) << out.explanation;
+}
+
+// Sec. 5.4, Fig. 16: stone sticks and tips where it lands; metal and plastic slide upright to
+// the logo and tumble on it.
+TEST(TumblingBunnies, StoneSticksAndTipsOthersSlideThenTumbleAtTheLogo) {
+  const Outcome out = runExperiment("tumbling_bunnies", options());
+  const double stone = out.value("travel_stone");
+  EXPECT_LT(stone, 0.25);
+  EXPECT_LT(stone, out.value("travel_metal"));
+  EXPECT_LT(stone, out.value("travel_plastic"));
+  EXPECT_GT(std::max(out.value("rotation_before_logo_stone"), out.value("rotation_on_logo_stone")),
+            45.0);
+  for (const std::string b : {"metal", "plastic"}) {
+    EXPECT_LT(out.value("rotation_before_logo_" + b), 45.0) << b;
+    EXPECT_GT(out.value("rotation_on_logo_" + b), 45.0) << b;
+  }
   EXPECT_TRUE(out.passed) << out.explanation;
 }
 
