@@ -40,3 +40,7 @@ done
 echo "demo: wrote into $out/"
 echo "  textures/{isotropic,anisotropic,sawtooth}_{b,a}.png   normal maps (${size}x${size}, 8 bit)"
 echo "  cones/{isotropic,anisotropic,sawtooth}.{json,svg,png} limit surfaces (polygon and box)"
+
+# The paper's experiments (docs/experiments.md): measured outcomes, plots and Table 1.
+"$asperity" report --out "$out"
+echo "  report/index.html   the experiments of Sec. 5 against the paper (open in a browser)"
