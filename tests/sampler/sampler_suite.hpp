@@ -270,6 +270,30 @@ TYPED_TEST_P(SamplerSuite, MeshEdgeMatchesPlane) {
   const Contact b = this->run(mesh, settings(8));
   EXPECT_EQ(b.covered_pixels, 256);
   for (int k = 0; k < 8; ++k) EXPECT_NEAR(a.mu.mu[k], b.mu.mu[k], TypeParam::tolerance()) << k;
+  // The same floor with its own UVs (the plane's mapping) and interpolated frames.
+  auto uv_quad = std::make_shared<TriangleMeshData>(*quad);
+  for (const Vec3& v : uv_quad->vertices) uv_quad->uvs.emplace_back(v.x() / 0.03, v.y() / 0.03);
+  mesh.bodies[0].shapes[0].mesh = uv_quad;
+  const Contact c = this->run(mesh, settings(8));
+  for (int k = 0; k < 8; ++k)
+    EXPECT_NEAR(a.mu.mu[k], c.mu.mu[k], 2.0 * TypeParam::tolerance()) << k;
+}
+
+// A gain mask of 0.5 everywhere halves the surface's contribution (Eq. 7 with k per texel).
+TYPED_TEST_P(SamplerSuite, GainMaskScalesContribution) {
+  const double theta = 0.4;
+  const auto facet = uniformMap(
+      Vec3f(static_cast<float>(std::sin(theta)), 0.0f, static_cast<float>(std::cos(theta))));
+  Body plane = planeBody(facet, 0.1, 2.0);
+  auto mask = std::make_shared<GainMask>();
+  mask->width = mask->height = 2;
+  mask->values.assign(4, 0.5f);
+  plane.shapes[0].surface.mask = mask;
+  Scene scene{{plane, boxBody(Vec3(0.2, 0.2, 0.1), {Vec3(0, 0, 0.1)}, nullptr, 0.1, 1.0)},
+              contactAt(Vec3::Zero(), 1e-4)};
+  const Contact c = this->run(scene, settings(4, 16, 0.02, 0.1));
+  EXPECT_NEAR(c.mu.mu[0], 0.1 + 2.0 * 0.5 * 2.0 / kPi * std::tan(theta),
+              2.0 * TypeParam::tolerance());
 }
 
 // Bad settings: each kind is an asperity::Error naming the parameter.
@@ -318,6 +342,7 @@ REGISTER_TYPED_TEST_SUITE_P(SamplerSuite, UniformFacetMatchesEquationFive,
                             FlatPatchMatchesFlatPatchCone, SawtoothIsAsymmetric,
                             RotatingTextureWithFrameKeepsCone, OneSurfaceFallsBackToMu0,
                             ZeroPenetrationAndCornerCoverage, SphereGivesPartialCoverage,
-                            MeshEdgeMatchesPlane, BadSettingsThrow, ExtremeWidthsStaySane);
+                            MeshEdgeMatchesPlane, GainMaskScalesContribution, BadSettingsThrow,
+                            ExtremeWidthsStaySane);
 
 }  // namespace asperity::sampler_test
