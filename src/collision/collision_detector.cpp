@@ -3,15 +3,15 @@
 // Bullet's role: Bullet's collision module (single precision, no dynamics world) finds the
 // pairs (btDbvtBroadphase) and runs the narrowphase (btCollisionDispatcher over a
 // btCollisionWorld): box-box clipping, GJK/EPA and polyhedral clipping for convex pairs, BVH
-// traversal for static triangle meshes. Convex shapes against planes are done here exactly
-// (plane_contacts: a box resting on a plane gets its four corners in one call). Its persistent
-// manifolds keep contact points alive across calls; each point gets an id stored in the manifold
-// point, from which the contact key is hashed. Everything after that is done here in double
-// precision: witness points from the manifold's local points through the double body poses, snapped
-// onto the exact primitive surfaces (contact_geometry), phi from the witness points.
-// Pairs with a dynamic closed mesh go through signed distances instead (sdf_pairs), and
-// pairs with a plane through plane_contacts: the near callback records those pairs and
-// Bullet's narrowphase does not touch them.
+// traversal for static triangle meshes. Its persistent manifolds keep contact points alive
+// across calls; each point gets an id stored in the manifold point, from which the contact key
+// is hashed. Everything after that is done here in double precision: witness points from the
+// manifold's local points through the double body poses, put back onto the true surfaces
+// (Bullet's margins removed, primitives exact: contact_geometry), phi from the witness points.
+//
+// Two kinds of pairs bypass Bullet's narrowphase (the near callback only records them):
+// shapes against planes (plane_contacts: exact points, a box resting flat gets its four
+// corners in one call) and pairs with a dynamic closed mesh (sdf_pairs: signed distances).
 //
 // One Bullet collision object per shape (not a btCompoundShape per body): Bullet stores a
 // compound's child index and a mesh's triangle index in the same manifold field, so separate
@@ -183,6 +183,7 @@ struct CollisionDetector::Impl {
   void createWorld();
   void addBody(BodyId id, const Body& body);
   void collectManifolds();
+  Contact manifoldContact(const btManifoldPoint& pt, const ShapeRecord& r0, const ShapeRecord& r1);
   void collectPlane(int r0, int r1);
 };
 
@@ -237,53 +238,57 @@ void CollisionDetector::Impl::collectManifolds() {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
     const ShapeRecord& r0 = records[static_cast<size_t>(manifold->getBody0()->getUserIndex())];
     const ShapeRecord& r1 = records[static_cast<size_t>(manifold->getBody1()->getUserIndex())];
-    const bool swap = !isA(r0, r1);
-    const ShapeRecord& ra = swap ? r1 : r0;
-    const ShapeRecord& rb = swap ? r0 : r1;
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       btManifoldPoint& pt = manifold->getContactPoint(p);
       // A persistent id per manifold point, kept by Bullet while the point is matched.
       if (!pt.m_userPersistentData) {
         pt.m_userPersistentData = reinterpret_cast<void*>(static_cast<uintptr_t>(next_point_id++));
       }
-      const auto point_id =
-          static_cast<uint64_t>(reinterpret_cast<uintptr_t>(pt.m_userPersistentData));
-      // Witness points from the local points through the double-precision poses.
-      Contact c;
-      c.body_a = ra.body, c.body_b = rb.body;
-      c.shape_a = ra.index, c.shape_b = rb.index;
-      const Vec3 w0 = r0.world.apply(fromBt(pt.m_localPointA));
-      const Vec3 w1 = r1.world.apply(fromBt(pt.m_localPointB));
-      const Vec3 n = fromBt(pt.m_normalWorldOnB).normalized();
-      c.witness_a = swap ? w1 : w0;
-      c.witness_b = swap ? w0 : w1;
-      c.normal = swap ? Vec3(-n) : n;
-      // Triangle indices of static meshes.
-      const int f0 = r0.shape.type == ShapeType::TriangleMesh && r0.body_type != BodyType::Dynamic
-                         ? pt.m_index0
-                         : -1;
-      const int f1 = r1.shape.type == ShapeType::TriangleMesh && r1.body_type != BodyType::Dynamic
-                         ? pt.m_index1
-                         : -1;
-      c.feature_a = swap ? f1 : f0;
-      c.feature_b = swap ? f0 : f1;
-      c.witness_a = onTrueSurface(ra, c.witness_a, -c.normal, c.feature_a);
-      c.witness_b = onTrueSurface(rb, c.witness_b, c.normal, c.feature_b);
-      // Hull contacts of meshes: the mesh triangle nearest to the witness point.
-      if (const MeshFeatures* f = featuresOf(ra)) {
-        c.feature_a = f->nearestTriangle(ra.world.applyInverse(c.witness_a),
-                                         ra.world.rotation.conjugate() * -c.normal);
-      }
-      if (const MeshFeatures* f = featuresOf(rb)) {
-        c.feature_b = f->nearestTriangle(rb.world.applyInverse(c.witness_b),
-                                         rb.world.rotation.conjugate() * c.normal);
-      }
-      finishContact(c, ra.shape, ra.world, rb.shape, rb.world);
+      Contact c = manifoldContact(pt, r0, r1);
       if (c.phi < 0 && !settings.report_gaps) continue;
-      c.key = contactKey(c, point_id);
+      c.key = contactKey(
+          c, static_cast<uint64_t>(reinterpret_cast<uintptr_t>(pt.m_userPersistentData)));
       contacts.push_back(c);
     }
   }
+}
+
+Contact CollisionDetector::Impl::manifoldContact(const btManifoldPoint& pt, const ShapeRecord& r0,
+                                                 const ShapeRecord& r1) {
+  // Bullet's body 0 and 1 in A/B order.
+  const bool swap = !isA(r0, r1);
+  const ShapeRecord& ra = swap ? r1 : r0;
+  const ShapeRecord& rb = swap ? r0 : r1;
+  Contact c;
+  c.body_a = ra.body, c.body_b = rb.body;
+  c.shape_a = ra.index, c.shape_b = rb.index;
+  // Witness points from the local points through the double-precision poses.
+  const Vec3 w0 = r0.world.apply(fromBt(pt.m_localPointA));
+  const Vec3 w1 = r1.world.apply(fromBt(pt.m_localPointB));
+  const Vec3 n = fromBt(pt.m_normalWorldOnB).normalized();
+  c.witness_a = swap ? w1 : w0;
+  c.witness_b = swap ? w0 : w1;
+  c.normal = swap ? Vec3(-n) : n;
+  // Triangle indices of static meshes, as Bullet reports them.
+  const auto bvhTriangle = [](const ShapeRecord& r, int index) {
+    return r.shape.type == ShapeType::TriangleMesh && r.body_type != BodyType::Dynamic ? index : -1;
+  };
+  c.feature_a = bvhTriangle(ra, swap ? pt.m_index1 : pt.m_index0);
+  c.feature_b = bvhTriangle(rb, swap ? pt.m_index0 : pt.m_index1);
+  c.witness_a = onTrueSurface(ra, c.witness_a, -c.normal, c.feature_a);
+  c.witness_b = onTrueSurface(rb, c.witness_b, c.normal, c.feature_b);
+  // Hull contacts of meshes: the mesh triangle nearest to the witness point.
+  if (const MeshFeatures* f = featuresOf(ra)) {
+    c.feature_a = f->nearestTriangle(ra.world.applyInverse(c.witness_a),
+                                     ra.world.rotation.conjugate() * -c.normal);
+  }
+  if (const MeshFeatures* f = featuresOf(rb)) {
+    c.feature_b = f->nearestTriangle(rb.world.applyInverse(c.witness_b),
+                                     rb.world.rotation.conjugate() * c.normal);
+  }
+  // Exact primitive surfaces, the plane's normal, phi and box faces in double.
+  finishContact(c, ra.shape, ra.world, rb.shape, rb.world);
+  return c;
 }
 
 void CollisionDetector::Impl::collectPlane(int r0, int r1) {
