@@ -194,6 +194,9 @@ void CollisionDetector::Impl::createWorld() {
   dispatcher->setNearCallback(&Impl::nearCallback);
   broadphase = std::make_unique<btDbvtBroadphase>();
   world = std::make_unique<btCollisionWorld>(dispatcher.get(), broadphase.get(), config.get());
+  // Separating-axis tests for polyhedra (boxes, hulls, triangles): a box face on a mesh face
+  // is clipped into its corner points in one call, as box-box is.
+  world->getDispatchInfo().m_enableSatConvex = true;
   filter.impl = this;
   world->getPairCache()->setOverlapFilterCallback(&filter);
 }
