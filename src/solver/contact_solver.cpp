@@ -41,7 +41,6 @@ void ContactSolver::begin(std::span<const Body> bodies, const SolverSettings& se
   }
   rows_.clear();
   order_.clear();
-  penetrating_.clear();
   coulomb_.clear();
   box_.clear();
   polygon_.clear();
@@ -61,28 +60,32 @@ void ContactSolver::prepareContact(const Contact& c, ContactRow& row) const {
   row.t = c.t;
   row.bt = c.b;
   // Angular Jacobians r x d and their images I^-1 (r x d).
-  row.ra_n = ra.cross(row.n);
-  row.rb_n = rb.cross(row.n);
-  row.ra_t = ra.cross(row.t);
-  row.rb_t = rb.cross(row.t);
-  row.ra_b = ra.cross(row.bt);
-  row.rb_b = rb.cross(row.bt);
-  row.ia_n = inv_inertia_[a] * row.ra_n;
-  row.ib_n = inv_inertia_[b] * row.rb_n;
-  row.ia_t = inv_inertia_[a] * row.ra_t;
-  row.ib_t = inv_inertia_[b] * row.rb_t;
-  row.ia_b = inv_inertia_[a] * row.ra_b;
-  row.ib_b = inv_inertia_[b] * row.rb_b;
+  row.ra = ra;
+  row.rb = rb;
+  const Vec3 ra_n = ra.cross(row.n), rb_n = rb.cross(row.n);
+  const Vec3 ra_t = ra.cross(row.t), rb_t = rb.cross(row.t);
+  const Vec3 ra_b = ra.cross(row.bt), rb_b = rb.cross(row.bt);
+  row.ia_n = inv_inertia_[a] * ra_n;
+  row.ib_n = inv_inertia_[b] * rb_n;
+  row.ia_t = inv_inertia_[a] * ra_t;
+  row.ib_t = inv_inertia_[b] * rb_t;
+  row.ia_b = inv_inertia_[a] * ra_b;
+  row.ib_b = inv_inertia_[b] * rb_b;
   // Effective masses: K = J M^-1 J^T for the normal row and the tangential 2x2 block.
   const double im = inv_mass_[a] + inv_mass_[b];
-  const double k_nn = im + row.ra_n.dot(row.ia_n) + row.rb_n.dot(row.ib_n);
+  const double k_nn = im + ra_n.dot(row.ia_n) + rb_n.dot(row.ib_n);
   row.mass_n = k_nn > 0.0 ? 1.0 / k_nn : 0.0;
   Eigen::Matrix2d k;
-  k(0, 0) = im + row.ra_t.dot(row.ia_t) + row.rb_t.dot(row.ib_t);
-  k(1, 1) = im + row.ra_b.dot(row.ia_b) + row.rb_b.dot(row.ib_b);
-  k(0, 1) = k(1, 0) = row.ra_t.dot(row.ia_b) + row.rb_t.dot(row.ib_b);
+  k(0, 0) = im + ra_t.dot(row.ia_t) + rb_t.dot(row.ib_t);
+  k(1, 1) = im + ra_b.dot(row.ia_b) + rb_b.dot(row.ib_b);
+  k(0, 1) = k(1, 0) = ra_t.dot(row.ia_b) + rb_t.dot(row.ib_b);
   const double det = k.determinant();
-  row.inv_k_tb = det > 1e-300 ? Eigen::Matrix2d(k.inverse()) : Eigen::Matrix2d::Zero();
+  // K^-1 = [k11 -k01; -k01 k00] / det, kept as its three distinct entries.
+  if (det > 1e-300) {
+    row.inv_k = Vec3(k(1, 1) / det, -k(0, 1) / det, k(0, 0) / det);
+  } else {
+    row.inv_k.setZero();
+  }
   // Largest eigenvalue of K: the step 1 / k_max never overshoots along any direction.
   const double mean = 0.5 * (k(0, 0) + k(1, 1));
   const double half_gap = 0.5 * (k(0, 0) - k(1, 1));
@@ -101,7 +104,6 @@ void ContactSolver::prepareContact(const Contact& c, ContactRow& row) const {
 void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction) {
   friction_ = friction;
   rows_.resize(contacts.size());
-  penetrating_.clear();
   coulomb_.clear();
   box_.clear();
   polygon_.clear();
@@ -109,7 +111,6 @@ void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction
     const Contact& c = contacts[i];
     ContactRow& row = rows_[i];
     prepareContact(c, row);
-    if (row.target_p > 0.0) penetrating_.push_back(static_cast<int>(i));
     // The limit surface chosen in the settings (SPEC 4).
     if (friction) {
       switch (settings_.limit_surface) {
@@ -215,7 +216,7 @@ double ContactSolver::sweepContacts(std::span<const Limit> limits) {
     Vec3 va = v_[a], wa = w_[a], vb = v_[b], wb = w_[b];
     const double ima = inv_mass_[a], imb = inv_mass_[b];
     // Normal row: lambda_n >= 0 (SPEC 1: impulse lambda_n n on A).
-    const double vn = r.n.dot(va - vb) + wa.dot(r.ra_n) - wb.dot(r.rb_n);
+    const double vn = r.n.dot((va + wa.cross(r.ra)) - (vb + wb.cross(r.rb)));
     const double ln = std::max(0.0, r.lambda_n + (r.target_n - vn) * r.mass_n);
     const double dn = ln - r.lambda_n;
     r.lambda_n = ln;
@@ -227,12 +228,13 @@ double ContactSolver::sweepContacts(std::span<const Limit> limits) {
     if constexpr (!std::is_same_v<Limit, NoFriction>) {
       // Tangential block: unconstrained 2x2 update, then project the accumulated impulse on
       // the limit surface for the current lambda_n (SPEC 4).
-      const Vec3 dv = va - vb;
-      const Vec2 vel(r.t.dot(dv) + wa.dot(r.ra_t) - wb.dot(r.rb_t),
-                     r.bt.dot(dv) + wa.dot(r.ra_b) - wb.dot(r.rb_b));
+      const Vec3 dv = (va + wa.cross(r.ra)) - (vb + wb.cross(r.rb));
+      const Vec2 vel(r.t.dot(dv), r.bt.dot(dv));
       const Vec2 old(r.lambda_t, r.lambda_b);
       bool outside = false;
-      Vec2 next = solver_detail::projectInline(limits[i], old - r.inv_k_tb * vel, ln, outside);
+      const Vec2 step(r.inv_k.x() * vel.x() + r.inv_k.y() * vel.y(),
+                      r.inv_k.y() * vel.x() + r.inv_k.z() * vel.y());
+      Vec2 next = solver_detail::projectInline(limits[i], old - step, ln, outside);
       // Sliding (the block update left the limit set): redo the update in the isotropic
       // metric 1 / k_max so that the projected friction opposes the slip velocity (maximal
       // dissipation). Projecting the K^-1-metric update instead turns the friction off the
@@ -257,27 +259,22 @@ double ContactSolver::sweepContacts(std::span<const Limit> limits) {
       v_[b] = vb;
       w_[b] = wb;
     }
+    // Split impulse: the same normal row on the pseudo-velocities toward target_p, while the
+    // row is in cache.
+    if (r.target_p > 0.0) solvePositionRow(r, a, b);
   }
   return delta2;
 }
 
-double ContactSolver::sweepPositions() {
-  // Split impulse: the same normal rows on the pseudo-velocities, toward target_p.
-  double delta2 = 0.0;
-  for (const int i : penetrating_) {
-    ContactRow& r = rows_[static_cast<size_t>(i)];
-    const size_t a = static_cast<size_t>(r.a), b = static_cast<size_t>(r.b);
-    const double vn = r.n.dot(vp_[a] - vp_[b]) + wp_[a].dot(r.ra_n) - wp_[b].dot(r.rb_n);
-    const double lp = std::max(0.0, r.lambda_p + (r.target_p - vn) * r.mass_n);
-    const double dp = lp - r.lambda_p;
-    r.lambda_p = lp;
-    vp_[a] += (inv_mass_[a] * dp) * r.n;
-    wp_[a] += dp * r.ia_n;
-    vp_[b] -= (inv_mass_[b] * dp) * r.n;
-    wp_[b] -= dp * r.ib_n;
-    delta2 += dp * dp;
-  }
-  return delta2;
+void ContactSolver::solvePositionRow(ContactRow& r, size_t a, size_t b) {
+  const double vn = r.n.dot((vp_[a] + wp_[a].cross(r.ra)) - (vp_[b] + wp_[b].cross(r.rb)));
+  const double lp = std::max(0.0, r.lambda_p + (r.target_p - vn) * r.mass_n);
+  const double dp = lp - r.lambda_p;
+  r.lambda_p = lp;
+  vp_[a] += (inv_mass_[a] * dp) * r.n;
+  wp_[a] += dp * r.ia_n;
+  vp_[b] -= (inv_mass_[b] * dp) * r.n;
+  wp_[b] -= dp * r.ib_n;
 }
 
 void ContactSolver::iterate(int iterations) {
@@ -297,7 +294,6 @@ void ContactSolver::iterate(int iterations) {
     } else {
       delta2 += sweepContacts(std::span<const PolygonLimit>(polygon_));
     }
-    sweepPositions();
     last_delta_ = std::sqrt(delta2);
   }
 }

@@ -77,13 +77,13 @@ class ContactSolver {
   struct ContactRow {
     int a = 0, b = 0;
     Vec3 n, t, bt;                            // normal and tangents (world)
-    Vec3 ra_n, rb_n, ra_t, rb_t, ra_b, rb_b;  // r x direction
+    Vec3 ra, rb;                              // contact point from each centre of mass
     Vec3 ia_n, ib_n, ia_t, ib_t, ia_b, ib_b;  // I^-1 (r x direction)
     double mass_n = 0.0;                      // 1 / K_nn
-    Eigen::Matrix2d inv_k_tb;                 // inverse of the tangential 2x2 block
-    double inv_k_slide = 0.0;                 // 1 / largest eigenvalue of that block
-    double target_n = 0.0;  // normal velocity target (negative for separated contacts)
-    double target_p = 0.0;  // pseudo-velocity target of the split impulse
+    Vec3 inv_k;                // inverse of the tangential 2x2 block K: (K^-1_tt, K^-1_tb, K^-1_bb)
+    double inv_k_slide = 0.0;  // 1 / largest eigenvalue of that block
+    double target_n = 0.0;     // normal velocity target (negative for separated contacts)
+    double target_p = 0.0;     // pseudo-velocity target of the split impulse
     double lambda_n = 0.0, lambda_t = 0.0, lambda_b = 0.0, lambda_p = 0.0;
   };
   // A point-to-point (ball) block of three rows.
@@ -120,7 +120,7 @@ class ContactSolver {
   void storeJointImpulses();
   template <class Limit>
   double sweepContacts(std::span<const Limit> limits);
-  double sweepPositions();
+  void solvePositionRow(ContactRow& r, size_t a, size_t b);
   double sweepJoints();
   void applyImpulse(int a, int b, const Vec3& p, const Vec3& ia, const Vec3& ib);
 
@@ -133,9 +133,8 @@ class ContactSolver {
   std::vector<Quat> rotation_;
   // Rows.
   std::vector<ContactRow> rows_;
-  std::vector<int> penetrating_;  // rows with a split-impulse target
-  std::vector<int> order_;        // sweep order of the contact rows (see scheduleRows)
-  std::vector<int> pending_;      // scratch of scheduleRows
+  std::vector<int> order_;    // sweep order of the contact rows (see scheduleRows)
+  std::vector<int> pending_;  // scratch of scheduleRows
   std::vector<CoulombLimit> coulomb_;
   std::vector<BoxLimit> box_;
   std::vector<PolygonLimit> polygon_;
