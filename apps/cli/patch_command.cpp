@@ -56,8 +56,9 @@ void label(cairo_t* cr, double x, double y, const std::string& text) {
 void drawFigure(const PatchImages& im, const Contact& c, float mu_max, const std::string& out) {
   const int r = im.resolution, n = im.directions;
   const int cell = std::max(3, 160 / r), side = r * cell;
-  const int rows_per_surface = (n + 1 + kColumns - 1) / kColumns;
-  const int width = 2 * kMargin + kColumns * (side + kMargin) + kText;
+  const int columns = std::min(kColumns, n + 1);
+  const int rows_per_surface = (n + 1 + columns - 1) / columns;
+  const int width = 2 * kMargin + columns * (side + kMargin) + kText;
   const int height = kMargin + 2 * rows_per_surface * (side + kLabel + kMargin);
   cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
   cairo_t* cr = cairo_create(surface);
@@ -69,8 +70,8 @@ void drawFigure(const PatchImages& im, const Contact& c, float mu_max, const std
   for (int s = 0; s < 2; ++s) {
     const char* name = s == 0 ? "A" : "B";
     for (int panel = 0; panel <= n; ++panel) {
-      const int row = s * rows_per_surface + panel / kColumns;
-      const int x = kMargin + (panel % kColumns) * (side + kMargin);
+      const int row = s * rows_per_surface + panel / columns;
+      const int x = kMargin + (panel % columns) * (side + kMargin);
       const int y = kMargin + row * (side + kLabel + kMargin) + kLabel;
       // Panel 0: normals; panel k + 1: channel k scaled by mu_max (Sec. 4.2 packing).
       label(cr, x, y - 5,
