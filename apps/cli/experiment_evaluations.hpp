@@ -50,5 +50,6 @@ Outcome evaluateChainBolas(const Experiment& e, const RunOptions& options);
 Outcome evaluateSawtoothRotated(const Experiment& e, const RunOptions& options);
 // Evaluations in experiment_evaluations_mesh.cpp.
 Outcome evaluateBunnies(const Experiment& e, const RunOptions& options);
+Outcome evaluateNutBolt(const Experiment& e, const RunOptions& options);
 
 }  // namespace asperity::experiments

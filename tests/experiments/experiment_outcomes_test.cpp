@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "asperity/error.hpp"
 #include "asperity/scene/scene.hpp"
@@ -133,6 +134,16 @@ TEST(TumblingBunnies, StoneSticksAndTipsOthersSlideThenTumbleAtTheLogo) {
     EXPECT_LT(out.value("rotation_before_logo_" + b), 45.0) << b;
     EXPECT_GT(out.value("rotation_on_logo_" + b), 45.0) << b;
   }
+  EXPECT_TRUE(out.passed) << out.explanation;
+}
+
+// Sec. 5.2, Fig. 13: the thread is only in the normal map; with frames along it a torque screws
+// the nut at one pitch per turn and an axial push (0.3 of its weight) does not move it.
+TEST(NutBolt, TorqueScrewsOnePitchPerTurnPushDoesNotSlide) {
+  const Outcome out = runExperiment("nut_bolt", options());
+  EXPECT_GE(std::abs(out.value("turns")), 1.0);
+  EXPECT_NEAR(std::abs(out.value("advance_per_turn")), 0.0007, 0.15 * 0.0007);
+  EXPECT_LT(out.value("pushed_displacement"), 0.0001);
   EXPECT_TRUE(out.passed) << out.explanation;
 }
 
