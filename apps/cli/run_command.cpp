@@ -18,6 +18,9 @@
 #include "asperity/scene/friction_registry.hpp"
 #include "asperity/scene/scene.hpp"
 #include "cli_common.hpp"
+#ifdef ASPERITY_HAVE_GL
+#include "asperity/sampler/gl_patch_sampler.hpp"
+#endif
 
 namespace asperity::cli {
 namespace {
@@ -162,6 +165,10 @@ class Progress {
 
 // The scene with the command line's overrides applied.
 SceneDesc loadWithOverrides(const RunOptions& opt) {
+#ifdef ASPERITY_HAVE_GL
+  // Scenes may ask for the OpenGL patch sampler ("gl").
+  registerGlPatchSampler();
+#endif
   SceneDesc scene = loadScene(opt.scene);
   if (!opt.friction.empty()) scene.settings.limit_surface = kFrictionNames.at(opt.friction);
   if (!opt.frame.empty()) scene.settings.frame_mode = kFrameNames.at(opt.frame);

@@ -4,7 +4,9 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
+#include <vector>
 
 #include "asperity/error.hpp"
 
@@ -44,6 +46,64 @@ std::pair<size_t, size_t> lineColumn(const std::string& text, size_t byte) {
   return {line, end - line_start + 1};
 }
 
+// Follows the parser's events to know the JSON pointer of each key, and refuses a key that an
+// object already has (the parser would silently keep the last one).
+class DuplicateKeyCheck {
+ public:
+  explicit DuplicateKeyCheck(std::string file) : file_(std::move(file)) {}
+
+  bool operator()(int /*depth*/, nlohmann::json::parse_event_t event, nlohmann::json& /*v*/) {
+    using Event = nlohmann::json::parse_event_t;
+    switch (event) {
+      case Event::object_start:
+      case Event::array_start:
+        frames_.push_back({event == Event::object_start, {}, {}, 0});
+        break;
+      case Event::key:
+        // The parser hands the key over as the parsed value; read it from the frame instead.
+        break;
+      case Event::object_end:
+      case Event::array_end:
+        frames_.pop_back();
+        advance();
+        break;
+      case Event::value:
+        advance();
+        break;
+    }
+    return true;
+  }
+
+  void key(const std::string& name) {
+    Frame& top = frames_.back();
+    if (!top.keys.insert(name).second)
+      throw Error(file_ + ": " + pointer() + "/" + escapePointerToken(name) + ": duplicate key");
+    top.current_key = name;
+  }
+
+ private:
+  struct Frame {
+    bool is_object;
+    std::set<std::string> keys;
+    std::string current_key;
+    size_t index;
+  };
+  // A finished element moves its array on to the next index.
+  void advance() {
+    if (!frames_.empty() && !frames_.back().is_object) ++frames_.back().index;
+  }
+  std::string pointer() const {
+    std::string out;
+    for (size_t i = 0; i + 1 < frames_.size(); ++i)
+      out += "/" + (frames_[i].is_object ? escapePointerToken(frames_[i].current_key)
+                                         : std::to_string(frames_[i].index));
+    return out;
+  }
+
+  std::string file_;
+  std::vector<Frame> frames_;
+};
+
 }  // namespace
 
 bool Range::contains(double x) const {
@@ -81,7 +141,12 @@ std::string formatNumber(double x) {
 
 nlohmann::json parseJsonText(const std::string& text, const std::string& file) {
   try {
-    return nlohmann::json::parse(text);
+    DuplicateKeyCheck check(file);
+    return nlohmann::json::parse(
+        text, [&check](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+          if (event == nlohmann::json::parse_event_t::key) check.key(parsed.get<std::string>());
+          return check(depth, event, parsed);
+        });
   } catch (const nlohmann::json::parse_error& e) {
     // Keep nlohmann's explanation, drop its "[json.exception...] parse error at ..." prefix.
     std::string what = e.what();

@@ -41,6 +41,19 @@ TEST(JsonReader, TruncatedDocument) {
   EXPECT_EQ(message.rfind("z.json:2:", 0), 0u) << message;
 }
 
+TEST(JsonReader, DuplicateKeysAreErrors) {
+  EXPECT_EQ(errorOf([] { parseJsonText(R"({"a": 1, "a": 2})", "d.json"); }),
+            "d.json: /a: duplicate key");
+  EXPECT_EQ(errorOf([] {
+              parseJsonText(R"({"bodies": [{"name": "a"}, [1, {"x": 0}], {"name": "b",
+                  "shapes": [], "name": "c"}]})",
+                            "d.json");
+            }),
+            "d.json: /bodies/2/name: duplicate key");
+  // The same key in different objects is fine.
+  EXPECT_EQ(parseJsonText(R"([{"a": 1}, {"a": 2}])", "d.json")[1]["a"], 2);
+}
+
 TEST(JsonReader, NumbersWithRanges) {
   const json j = {{"dt", 0.01}, {"zero", 0.0}, {"neg", -0.1}, {"big", 1e300}};
   JsonReader r(j, "f.json");
