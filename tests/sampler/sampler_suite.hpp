@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "asperity/error.hpp"
+#include "asperity/friction/directions.hpp"
+#include "asperity/friction/fragment_model.hpp"
 #include "asperity/friction/patch_cone.hpp"
 #include "asperity/sampler/friction_provider.hpp"
 #include "asperity/texture/generators.hpp"
@@ -141,6 +143,27 @@ TYPED_TEST_P(SamplerSuite, UniformFacetMatchesEquationFive) {
   c = this->run(flipped, settings());
   EXPECT_NEAR(c.mu.mu[0], 0.2, 3.0 * tol);
   EXPECT_NEAR(c.mu.mu[2], 0.2 + 3.0 * expected, 3.0 * tol);
+}
+
+// The fragment model's fixtures (gentle, steep beyond mu_max, facing away, flat, off-axis): a
+// uniform map on B gives exactly fragmentMu of the friction module in every direction, so the
+// samplers' shading (and the GLSL copy of the formula) is pinned to the C++ one.
+TYPED_TEST_P(SamplerSuite, FragmentFixturesMatchFragmentMu) {
+  const std::vector<Vec3f> fixtures = {Vec3f(0.1f, 0.05f, 1.0f), Vec3f(0.9f, -0.2f, 0.1f),
+                                       Vec3f(0.3f, 0.4f, -0.5f), Vec3f(0.0f, 0.0f, 1.0f),
+                                       Vec3f(-0.5f, 0.7f, 0.6f)};
+  const std::vector<Vec2> dirs = sampleDirections(8);
+  for (const Vec3f& m : fixtures) {
+    Scene scene{{planeBody(uniformMap(m), 0.1, 1.0),
+                 boxBody(Vec3(0.2, 0.2, 0.1), {Vec3(0, 0, 0.1)}, nullptr, 0.1, 1.0)},
+                contactAt(Vec3(0.004, -0.003, 0), 1e-4)};
+    const Contact c = this->run(scene, settings(8, 4, 0.02, 0.0));
+    for (int k = 0; k < 8; ++k) {
+      const float expected =
+          fragmentMu(m.normalized(), Side::B, dirs[static_cast<size_t>(k)].cast<float>());
+      EXPECT_NEAR(c.mu.mu[k], expected, TypeParam::tolerance()) << m.transpose() << " k " << k;
+    }
+  }
 }
 
 // A flat patch covering whole texels (w = texture size, one pixel per texel, centres on texel
@@ -339,10 +362,10 @@ TYPED_TEST_P(SamplerSuite, ExtremeWidthsStaySane) {
 }
 
 REGISTER_TYPED_TEST_SUITE_P(SamplerSuite, UniformFacetMatchesEquationFive,
-                            FlatPatchMatchesFlatPatchCone, SawtoothIsAsymmetric,
-                            RotatingTextureWithFrameKeepsCone, OneSurfaceFallsBackToMu0,
-                            ZeroPenetrationAndCornerCoverage, SphereGivesPartialCoverage,
-                            MeshEdgeMatchesPlane, GainMaskScalesContribution, BadSettingsThrow,
-                            ExtremeWidthsStaySane);
+                            FragmentFixturesMatchFragmentMu, FlatPatchMatchesFlatPatchCone,
+                            SawtoothIsAsymmetric, RotatingTextureWithFrameKeepsCone,
+                            OneSurfaceFallsBackToMu0, ZeroPenetrationAndCornerCoverage,
+                            SphereGivesPartialCoverage, MeshEdgeMatchesPlane,
+                            GainMaskScalesContribution, BadSettingsThrow, ExtremeWidthsStaySane);
 
 }  // namespace asperity::sampler_test
