@@ -84,6 +84,40 @@ btTransform toBt(const Transform& t) {
                      toBt(t.position));
 }
 
+double bulletScale(std::span<const Body> bodies) {
+  double smallest = 0.0;
+  for (const Body& body : bodies) {
+    if (body.type != BodyType::Dynamic) continue;
+    for (const Shape& shape : body.shapes) {
+      const double size = shapeSize(shape);
+      if (size > 0 && (smallest == 0 || size < smallest)) smallest = size;
+    }
+  }
+  double scale = 1.0;
+  while (smallest > 0 && smallest * scale < 0.2 && scale < 1e6) scale *= 2;
+  return scale;
+}
+
+Shape scaledShape(const Shape& shape, double scale) {
+  if (scale == 1.0) return shape;
+  Shape out = shape;
+  out.local.position *= scale;
+  out.half_extents *= scale;
+  out.radius *= scale;
+  out.half_height *= scale;
+  out.plane_offset *= scale;
+  if (shape.mesh) {
+    auto mesh = std::make_shared<TriangleMeshData>(*shape.mesh);
+    for (Vec3& v : mesh->vertices) v *= scale;
+    out.mesh = std::move(mesh);
+  }
+  return out;
+}
+
+btTransform toBt(const Transform& t, double scale) {
+  return toBt(Transform{t.position * scale, t.rotation});
+}
+
 double shapeSize(const Shape& shape) {
   switch (shape.type) {
     case ShapeType::Box:

@@ -6,6 +6,7 @@
 #include <btBulletCollisionCommon.h>
 
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "asperity/dynamics/body.hpp"
@@ -20,6 +21,16 @@ inline Vec3 fromBt(const btVector3& v) {
   return {static_cast<double>(v.x()), static_cast<double>(v.y()), static_cast<double>(v.z())};
 }
 btTransform toBt(const Transform& t);
+
+// Bullet's GJK and manifolds carry absolute tolerances tuned for shapes of decimetres to
+// metres, so a scene of millimetre parts fails to touch. Bullet therefore works in scaled
+// units: lengths times this power of two (exact in floats), chosen so that the smallest
+// dynamic shape is at least 0.2 units across; 1 for scenes of ordinary objects.
+double bulletScale(std::span<const Body> bodies);
+// The shape with every length (extents, radii, offsets, local position, mesh) times `scale`.
+Shape scaledShape(const Shape& shape, double scale);
+// A transform with its translation times `scale`, as Bullet's single precision.
+btTransform toBt(const Transform& t, double scale);
 
 // The smallest extent of a shape (m): the size its margin and thresholds follow.
 double shapeSize(const Shape& shape);

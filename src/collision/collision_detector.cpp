@@ -92,13 +92,15 @@ struct CollisionDetector::Impl {
                                          const btCollisionObject* b1) override {
       btPersistentManifold* m = btCollisionDispatcher::getNewManifold(b0, b1);
       if (impl->settings.contact_margin > 0) {
-        m->setContactBreakingThreshold(static_cast<btScalar>(impl->settings.contact_margin));
+        m->setContactBreakingThreshold(
+            static_cast<btScalar>(impl->settings.contact_margin * impl->scale));
       }
       return m;
     }
   };
 
   CollisionSettings settings;
+  double scale = 1.0;  // Bullet's units per metre (bulletScale)
   std::vector<ShapeRecord> records;
   std::vector<BodyType> body_types;
   std::set<std::pair<BodyId, BodyId>> ignored;
@@ -208,7 +210,7 @@ void CollisionDetector::Impl::addBody(BodyId id, const Body& body) {
     rec.index = static_cast<int>(s);
     rec.body_type = body.type;
     rec.shape = body.shapes[s];
-    rec.bullet = makeBulletShape(rec.shape, body.type);
+    rec.bullet = makeBulletShape(scaledShape(rec.shape, scale), body.type);
     // Closed meshes may take the signed-distance path (sdf_pairs).
     rec.closed_mesh = rec.shape.type == ShapeType::TriangleMesh && isClosedMesh(*rec.shape.mesh);
     // Face planes of hulls, for putting witness points back onto the true surface.
@@ -217,14 +219,14 @@ void CollisionDetector::Impl::addBody(BodyId id, const Body& body) {
       if (const btConvexPolyhedron* poly = hull->getConvexPolyhedron()) {
         for (int f = 0; f < poly->m_faces.size(); ++f) {
           const btScalar* p = poly->m_faces[f].m_plane;
-          rec.hull_planes.emplace_back(p[0], p[1], p[2], p[3]);
+          rec.hull_planes.emplace_back(p[0], p[1], p[2], p[3] / scale);
         }
       }
     }
     rec.world = body.pose * rec.shape.local;
     rec.object = std::make_unique<btCollisionObject>();
     rec.object->setCollisionShape(rec.bullet.shape.get());
-    rec.object->setWorldTransform(toBt(rec.world));
+    rec.object->setWorldTransform(toBt(rec.world, scale));
     rec.object->setUserIndex(static_cast<int>(records.size()));
     rec.object->setActivationState(DISABLE_DEACTIVATION);
     if (body.type == BodyType::Static) {
@@ -266,8 +268,8 @@ Contact CollisionDetector::Impl::manifoldContact(const btManifoldPoint& pt, cons
   c.body_a = ra.body, c.body_b = rb.body;
   c.shape_a = ra.index, c.shape_b = rb.index;
   // Witness points from the local points through the double-precision poses.
-  const Vec3 w0 = r0.world.apply(fromBt(pt.m_localPointA));
-  const Vec3 w1 = r1.world.apply(fromBt(pt.m_localPointB));
+  const Vec3 w0 = r0.world.apply(fromBt(pt.m_localPointA) / scale);
+  const Vec3 w1 = r1.world.apply(fromBt(pt.m_localPointB) / scale);
   const Vec3 n = fromBt(pt.m_normalWorldOnB).normalized();
   c.witness_a = swap ? w1 : w0;
   c.witness_b = swap ? w0 : w1;
@@ -330,6 +332,7 @@ void CollisionDetector::setBodies(std::span<const Body> bodies, const CollisionS
   Impl& s = *impl_;
   s.release();
   s.settings = settings;
+  s.scale = bulletScale(bodies);
   s.sdf.reset(settings);
   s.contacts.clear();
   s.body_types.clear();
@@ -352,7 +355,7 @@ const std::vector<Contact>& CollisionDetector::detect(std::span<const Body> bodi
   // Poses of this call, in double for the contact geometry and in float for Bullet.
   for (ShapeRecord& rec : s.records) {
     rec.world = bodies[rec.body].pose * rec.shape.local;
-    rec.object->setWorldTransform(toBt(rec.world));
+    rec.object->setWorldTransform(toBt(rec.world, s.scale));
   }
   s.contacts.clear();
   s.plane_pairs.clear();

@@ -28,6 +28,18 @@ TEST(BulletShapes, MarginsFollowTheSize) {
   EXPECT_TRUE(near(shapeSize(collision_test::groundMesh(2.0).shapes[0]), 4.0, 1e-12));
 }
 
+TEST(BulletShapes, ScaleBringsMillimetrePartsToDecimetres) {
+  Body part = collision_test::sphereBody(0.0005, Vec3::Zero());  // 1 mm across
+  const std::vector<Body> small = {collision_test::groundPlane(), part};
+  EXPECT_EQ(bulletScale(small), 256.0);  // 1 mm x 256 = 0.256 units
+  const std::vector<Body> cubes = {collision_test::boxBody(Vec3::Constant(0.1), Vec3::Zero(), 0)};
+  EXPECT_EQ(bulletScale(cubes), 1.0);
+  const Shape scaled = scaledShape(part.shapes[0], 256.0);
+  EXPECT_EQ(scaled.radius, 0.128);
+  const btTransform t = toBt(Transform{Vec3(0.001, 0, 0), Quat::Identity()}, 256.0);
+  EXPECT_FLOAT_EQ(t.getOrigin().x(), 0.256f);
+}
+
 TEST(BulletShapes, CapsulesAndCylindersRunAlongLocalZ) {
   Shape capsule;
   capsule.type = ShapeType::Capsule;

@@ -78,6 +78,29 @@ TEST(CollisionDetector, MillimetreBoxStack) {
   }
 }
 
+TEST(CollisionDetector, MillimetrePrimitivesOnABox) {
+  // Half-millimetre radii, 10 um deep: Bullet's GJK works in scaled units (bulletScale).
+  const double r = 5e-4, hh = 1e-3, d = 1e-5;
+  Body table = boxBody(Vec3(0.01, 0.01, 0.001), Vec3(0, 0, -0.001), 0.0);
+  table.type = BodyType::Static;
+  const Quat lying(Eigen::AngleAxisd(kPi / 2, Vec3::UnitY()));
+  const std::vector<Body> bodies[] = {
+      {table, sphereBody(r, Vec3(0.001, 0, r - d))},
+      {table, capsuleBody(r, hh, Vec3(0, 0, r - d), lying)},
+      {table, cylinderBody(r, hh, Vec3(0, 0, hh - d), Quat::Identity())},
+      {table, cylinderBody(r, hh, Vec3(0, 0, r - d), lying)}};
+  for (const auto& scene : bodies) {
+    const auto contacts = detectOnce(scene);
+    ASSERT_GE(contacts.size(), 1u) << scene[1].shapes[0].radius;
+    for (const Contact& c : contacts) {
+      EXPECT_TRUE(near(c.phi, d, 0, 1e-8));
+      EXPECT_TRUE(near(c.normal.z(), 1.0, 0, 1e-6));
+      EXPECT_TRUE(near(c.witness_a.z(), -d, 0, 1e-8));
+      EXPECT_TRUE(near(c.witness_b.z(), 0.0, 0, 1e-8));
+    }
+  }
+}
+
 TEST(CollisionDetector, KinematicBodyIsB) {
   // A kinematic box under a dynamic sphere with the higher id: the sphere is still A.
   Body platform = boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0);
