@@ -80,6 +80,11 @@ void ContactSolver::prepareContact(const Contact& c, ContactRow& row) const {
   k(1, 1) = im + ra_b.dot(row.ia_b) + rb_b.dot(row.ib_b);
   k(0, 1) = k(1, 0) = ra_t.dot(row.ia_b) + rb_t.dot(row.ib_b);
   const double det = k.determinant();
+  // How a normal impulse changes the tangential velocities (K_tn, K_bn), so the friction row
+  // sees the normal row's update without recomputing the relative velocity.
+  const Vec3 coupling = im * row.n + row.ia_n.cross(ra) + row.ib_n.cross(rb);
+  row.k_tn = row.t.dot(coupling);
+  row.k_bn = row.bt.dot(coupling);
   // K^-1 = [k11 -k01; -k01 k00] / det, kept as its three distinct entries.
   if (det > 1e-300) {
     row.inv_k = Vec3(k(1, 1) / det, -k(0, 1) / det, k(0, 0) / det);
@@ -215,21 +220,20 @@ double ContactSolver::sweepContacts(std::span<const Limit> limits) {
     // Local copies: the compiler need not reload the row after each velocity write.
     Vec3 va = v_[a], wa = w_[a], vb = v_[b], wb = w_[b];
     const double ima = inv_mass_[a], imb = inv_mass_[b];
+    // Relative velocity of A's contact point over B's, once per row.
+    const Vec3 dv = (va + wa.cross(r.ra)) - (vb + wb.cross(r.rb));
     // Normal row: lambda_n >= 0 (SPEC 1: impulse lambda_n n on A).
-    const double vn = r.n.dot((va + wa.cross(r.ra)) - (vb + wb.cross(r.rb)));
-    const double ln = std::max(0.0, r.lambda_n + (r.target_n - vn) * r.mass_n);
+    const double ln = std::max(0.0, r.lambda_n + (r.target_n - r.n.dot(dv)) * r.mass_n);
     const double dn = ln - r.lambda_n;
     r.lambda_n = ln;
-    va += (ima * dn) * r.n;
-    wa += dn * r.ia_n;
-    vb -= (imb * dn) * r.n;
-    wb -= dn * r.ib_n;
     delta2 += dn * dn;
+    Vec3 p = dn * r.n;
+    Vec3 ia = dn * r.ia_n, ib = dn * r.ib_n;
     if constexpr (!std::is_same_v<Limit, NoFriction>) {
-      // Tangential block: unconstrained 2x2 update, then project the accumulated impulse on
-      // the limit surface for the current lambda_n (SPEC 4).
-      const Vec3 dv = (va + wa.cross(r.ra)) - (vb + wb.cross(r.rb));
-      const Vec2 vel(r.t.dot(dv), r.bt.dot(dv));
+      // Tangential block: the tangential velocity after the normal update (through the
+      // coupling K_tn, K_bn), the unconstrained 2x2 update, then the accumulated impulse
+      // projected on the limit surface for the current lambda_n (SPEC 4).
+      const Vec2 vel(r.t.dot(dv) + dn * r.k_tn, r.bt.dot(dv) + dn * r.k_bn);
       const Vec2 old(r.lambda_t, r.lambda_b);
       bool outside = false;
       const Vec2 step(r.inv_k.x() * vel.x() + r.inv_k.y() * vel.y(),
@@ -245,13 +249,16 @@ double ContactSolver::sweepContacts(std::span<const Limit> limits) {
       const Vec2 d = next - old;
       r.lambda_t = next.x();
       r.lambda_b = next.y();
-      const Vec3 p = d.x() * r.t + d.y() * r.bt;
-      va += ima * p;
-      wa += d.x() * r.ia_t + d.y() * r.ia_b;
-      vb -= imb * p;
-      wb -= d.x() * r.ib_t + d.y() * r.ib_b;
+      p += d.x() * r.t + d.y() * r.bt;
+      ia += d.x() * r.ia_t + d.y() * r.ia_b;
+      ib += d.x() * r.ib_t + d.y() * r.ib_b;
       delta2 += d.squaredNorm();
     }
+    // Both rows' impulses applied at once: p on A at r_A, -p on B at r_B.
+    va += ima * p;
+    wa += ia;
+    vb -= imb * p;
+    wb -= ib;
     v_[a] = va;
     w_[a] = wa;
     // Static and kinematic bodies keep their velocity: no store, no false dependency.

@@ -82,8 +82,9 @@ class ContactSolver {
     double mass_n = 0.0;                      // 1 / K_nn
     Vec3 inv_k;                // inverse of the tangential 2x2 block K: (K^-1_tt, K^-1_tb, K^-1_bb)
     double inv_k_slide = 0.0;  // 1 / largest eigenvalue of that block
-    double target_n = 0.0;     // normal velocity target (negative for separated contacts)
-    double target_p = 0.0;     // pseudo-velocity target of the split impulse
+    double k_tn = 0.0, k_bn = 0.0;  // K_tn, K_bn: tangential response to lambda_n
+    double target_n = 0.0;          // normal velocity target (negative for separated contacts)
+    double target_p = 0.0;          // pseudo-velocity target of the split impulse
     double lambda_n = 0.0, lambda_t = 0.0, lambda_b = 0.0, lambda_p = 0.0;
   };
   // A point-to-point (ball) block of three rows.
