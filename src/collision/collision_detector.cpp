@@ -3,7 +3,8 @@
 // Bullet's role: Bullet's collision module (single precision, no dynamics world) finds the
 // pairs (btDbvtBroadphase) and runs the narrowphase (btCollisionDispatcher over a
 // btCollisionWorld): box-box clipping, GJK/EPA and polyhedral clipping for convex pairs, BVH
-// traversal for static triangle meshes. Its persistent manifolds keep contact points alive
+// traversal for static triangle meshes, all in units scaled to the scene (bulletScale) so that
+// its absolute tolerances suit millimetre parts. Its persistent manifolds keep contact points alive
 // across calls; each point gets an id stored in the manifold point, from which the contact key
 // is hashed. Everything after that is done here in double precision: witness points from the
 // manifold's local points through the double body poses, put back onto the true surfaces
