@@ -4,6 +4,7 @@
 #include <meshoptimizer.h>
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <string>
@@ -48,6 +49,25 @@ int vertexFor(const tinyobj::index_t& idx, const tinyobj::attrib_t& attrib, doub
   const int id = static_cast<int>(mesh.vertices.size()) - 1;
   seen.emplace(key, id);
   return id;
+}
+
+// Edge collapses can fold two triangles onto the same three vertices (a fin of no volume, its
+// edges used four times): dropping each such pair, and degenerate triangles, keeps a closed
+// mesh closed for the signed-distance collision path.
+void dropFins(TriangleMeshData& mesh) {
+  std::map<std::array<int, 3>, int> count;
+  auto key = [](std::array<int, 3> t) {
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  for (const auto& t : mesh.triangles) ++count[key(t)];
+  std::vector<std::array<int, 3>> kept;
+  for (const auto& t : mesh.triangles) {
+    const auto k = key(t);
+    const bool degenerate = k[0] == k[1] || k[1] == k[2];
+    if (!degenerate && count[k] % 2 == 1) kept.push_back(t), count[k] = 0;
+  }
+  mesh.triangles = std::move(kept);
 }
 
 }  // namespace
@@ -115,19 +135,29 @@ std::shared_ptr<TriangleMeshData> simplifyMesh(const TriangleMeshData& mesh,
                                    mesh.vertices.size(), 3 * sizeof(float), target, 1.0f, nullptr);
   }
   result.resize(count);
+  // Triangles in the original numbering, fins dropped.
+  TriangleMeshData reduced;
+  for (size_t t = 0; t + 2 < result.size(); t += 3) {
+    reduced.triangles.push_back({static_cast<int>(result[t]), static_cast<int>(result[t + 1]),
+                                 static_cast<int>(result[t + 2])});
+  }
+  dropFins(reduced);
   // Keep only the vertices still in use, in their original order.
   std::vector<int> remap(mesh.vertices.size(), -1);
   out->vertices.clear();
   out->uvs.clear();
   out->triangles.clear();
-  for (unsigned int i : result) {
-    if (remap[i] >= 0) continue;
-    remap[i] = static_cast<int>(out->vertices.size());
-    out->vertices.push_back(mesh.vertices[i]);
-    if (!mesh.uvs.empty()) out->uvs.push_back(mesh.uvs[i]);
-  }
-  for (size_t t = 0; t + 2 < result.size(); t += 3) {
-    out->triangles.push_back({remap[result[t]], remap[result[t + 1]], remap[result[t + 2]]});
+  for (auto tri : reduced.triangles) {
+    for (int& i : tri) {
+      const auto v = static_cast<size_t>(i);
+      if (remap[v] < 0) {
+        remap[v] = static_cast<int>(out->vertices.size());
+        out->vertices.push_back(mesh.vertices[v]);
+        if (!mesh.uvs.empty()) out->uvs.push_back(mesh.uvs[v]);
+      }
+      i = remap[v];
+    }
+    out->triangles.push_back(tri);
   }
   return out;
 }

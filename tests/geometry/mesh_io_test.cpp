@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "asperity/collision/signed_distance_field.hpp"
 #include "asperity/error.hpp"
 #include "support/test_support.hpp"
 
@@ -85,8 +86,11 @@ TEST(MeshIo, BunnyLoadsAndSimplifiesForCollision) {
   EXPECT_TRUE(bunny->uvs.empty());
   const auto simple = simplifyMesh(*bunny, 2000);
   EXPECT_LE(simple->triangles.size(), 2000u);
-  EXPECT_GE(simple->triangles.size(), 1000u);
+  EXPECT_GE(simple->triangles.size(), 1900u);
   EXPECT_LT(simple->vertices.size(), 1500u);
+  // The bunny is closed, and stays closed for the signed-distance collision path.
+  EXPECT_TRUE(isClosedMesh(*bunny));
+  EXPECT_TRUE(isClosedMesh(*simple));
   // The simplified bunny keeps its extent (within a few per cent of its size).
   auto box = [](const TriangleMeshData& m) {
     Eigen::AlignedBox3d b;

@@ -17,7 +17,9 @@ std::shared_ptr<TriangleMeshData> loadObjMesh(const std::string& path, double sc
 
 // A simplified copy with at most `target_triangles` triangles (meshoptimizer's edge-collapse
 // simplifier, then its sloppy one if that cannot get there), unused vertices removed, UVs
-// kept. Throws Error when target_triangles is 0. A mesh already small enough is copied.
+// kept. Pairs of triangles folded onto the same three vertices are dropped, so a closed mesh
+// stays closed (as the signed-distance collision path needs). Throws Error when
+// target_triangles is 0. A mesh already small enough is copied.
 std::shared_ptr<TriangleMeshData> simplifyMesh(const TriangleMeshData& mesh,
                                                size_t target_triangles);
 
