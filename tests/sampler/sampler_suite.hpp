@@ -319,6 +319,32 @@ TYPED_TEST_P(SamplerSuite, GainMaskScalesContribution) {
               2.0 * TypeParam::tolerance());
 }
 
+// A cylinder lying on the plane with its texture seam (longitude +-pi) along the contact line:
+// the patch crosses the seam and still gives finite coefficients within the model's range.
+TYPED_TEST_P(SamplerSuite, TextureSeamStaysSane) {
+  Body cylinder;
+  cylinder.pose.position = Vec3(0, 0, 0.05 - 1e-4);
+  cylinder.pose.rotation = Quat::FromTwoVectors(-Vec3::UnitX(), -Vec3::UnitZ());
+  Shape s;
+  s.type = ShapeType::Cylinder;
+  s.radius = 0.05;
+  s.half_height = 0.1;
+  s.surface.normal_map = roughMap(16, 7);
+  s.surface.texture_size = 0.07;
+  cylinder.shapes.push_back(s);
+  Scene scene{{planeBody(roughMap(8, 1), 0.1, 1.0), cylinder},
+              contactAt(Vec3(0.001, 0.002, -0.5e-4), 1e-4)};
+  const Contact c = this->run(scene, settings(8));
+  EXPECT_FALSE(c.fallback);
+  EXPECT_GT(c.covered_pixels, 16);
+  EXPECT_LT(c.covered_pixels, 256);
+  for (int k = 0; k < 8; ++k) {
+    EXPECT_TRUE(std::isfinite(c.mu.mu[k]));
+    EXPECT_GE(c.mu.mu[k], 0.2f - 1e-6f);
+    EXPECT_LE(c.mu.mu[k], 0.2f + 2.0f * kDefaultMuMax);
+  }
+}
+
 // Bad settings: each kind is an asperity::Error naming the parameter.
 TYPED_TEST_P(SamplerSuite, BadSettingsThrow) {
   Scene scene{{planeBody(nullptr, 0.1, 1.0),
@@ -366,6 +392,7 @@ REGISTER_TYPED_TEST_SUITE_P(SamplerSuite, UniformFacetMatchesEquationFive,
                             SawtoothIsAsymmetric, RotatingTextureWithFrameKeepsCone,
                             OneSurfaceFallsBackToMu0, ZeroPenetrationAndCornerCoverage,
                             SphereGivesPartialCoverage, MeshEdgeMatchesPlane,
-                            GainMaskScalesContribution, BadSettingsThrow, ExtremeWidthsStaySane);
+                            GainMaskScalesContribution, TextureSeamStaysSane, BadSettingsThrow,
+                            ExtremeWidthsStaySane);
 
 }  // namespace asperity::sampler_test
