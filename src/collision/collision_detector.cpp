@@ -344,7 +344,14 @@ void CollisionDetector::setBodies(std::span<const Body> bodies, const CollisionS
     s.body_types.push_back(body.type);
     s.addBody(static_cast<BodyId>(b), body);
   }
-  for (ShapeRecord& rec : s.records) s.world->addCollisionObject(rec.object.get());
+  for (ShapeRecord& rec : s.records) {
+    s.world->addCollisionObject(rec.object.get());
+    // Fields of dynamic closed meshes now rather than in the first step (static ones on use).
+    if (settings.mesh_pairs == MeshPairMode::Auto && rec.closed_mesh &&
+        rec.body_type == BodyType::Dynamic) {
+      s.sdf.field(rec);
+    }
+  }
 }
 
 const std::vector<Contact>& CollisionDetector::detect(std::span<const Body> bodies) {
