@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <type_traits>
 
 #include "solver/inline_projections.hpp"
@@ -112,6 +113,7 @@ void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction
   coulomb_.clear();
   box_.clear();
   polygon_.clear();
+  size_t cursor = 0;
   for (size_t i = 0; i < contacts.size(); ++i) {
     const Contact& c = contacts[i];
     ContactRow& row = rows_[i];
@@ -130,7 +132,9 @@ void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction
           break;
       }
     }
-    if (settings_.warm_starting) warmStartRow(c.key, row, i);
+    if (settings_.warm_starting) {
+      if (const Cached* cached = findCached(c, cursor)) warmStartRow(*cached, row, i);
+    }
   }
   scheduleRows();
 }
@@ -166,13 +170,31 @@ void ContactSolver::scheduleRows() {
   while (head < pending_.size()) emit(pending_[head++]);
 }
 
-void ContactSolver::warmStartRow(uint64_t key, ContactRow& row, size_t index) const {
-  // Same contact last step (unique key): reuse its impulses, the tangential one re-expressed
-  // in this step's frame and projected on this step's limit surface.
-  const auto range =
-      std::equal_range(cache_.begin(), cache_.end(), Cached{key, 0.0, Vec3()},
-                       [](const Cached& x, const Cached& y) { return x.key < y.key; });
-  if (range.second - range.first != 1) return;
+bool ContactSolver::Cached::operator<(const Cached& o) const {
+  return std::tie(a, b, key) < std::tie(o.a, o.b, o.key);
+}
+
+const ContactSolver::Cached* ContactSolver::findCached(const Contact& c, size_t& cursor) const {
+  // Contacts and cache share the order (body_a, body_b, key): a walking cursor finds most
+  // entries in O(1); anything else falls back to a binary search. Only a unique match counts.
+  const Cached probe{c.body_a, c.body_b, c.key, 0.0, Vec3::Zero()};
+  auto same = [&](size_t i) {
+    return i < cache_.size() && !(cache_[i] < probe) && !(probe < cache_[i]);
+  };
+  if (!same(cursor)) {
+    cursor =
+        static_cast<size_t>(std::lower_bound(cache_.begin(), cache_.end(), probe) - cache_.begin());
+    if (!same(cursor)) return nullptr;
+  }
+  const size_t hit = cursor++;
+  if (same(cursor)) return nullptr;  // the key is not unique
+  return &cache_[hit];
+}
+
+void ContactSolver::warmStartRow(const Cached& cached, ContactRow& row, size_t index) const {
+  // Same contact last step: reuse its impulses, the tangential one re-expressed in this
+  // step's frame and projected on this step's limit surface.
+  const auto range = std::make_pair(&cached, &cached + 1);
   row.lambda_n = range.first->lambda_n;
   if (!friction_) return;
   const Vec2 tb(range.first->tangential.dot(row.t), range.first->tangential.dot(row.bt));
@@ -318,11 +340,12 @@ void ContactSolver::finish(std::span<Body> bodies, std::span<Contact> contacts) 
     contacts[i].lambda_n = r.lambda_n;
     contacts[i].lambda_t = r.lambda_t;
     contacts[i].lambda_b = r.lambda_b;
-    cache_.push_back({contacts[i].key, r.lambda_n, r.lambda_t * r.t + r.lambda_b * r.bt});
+    cache_.push_back({contacts[i].body_a, contacts[i].body_b, contacts[i].key, r.lambda_n,
+                      r.lambda_t * r.t + r.lambda_b * r.bt});
   }
-  // Sorted by key for the next step's lookups (stable: ties keep contact order).
-  std::stable_sort(cache_.begin(), cache_.end(),
-                   [](const Cached& x, const Cached& y) { return x.key < y.key; });
+  // Sorted by (body_a, body_b, key) for the next step's lookups; contacts usually arrive in
+  // that order already (stable: ties keep contact order).
+  if (!std::is_sorted(cache_.begin(), cache_.end())) std::stable_sort(cache_.begin(), cache_.end());
   storeJointImpulses();
 }
 

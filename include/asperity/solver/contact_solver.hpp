@@ -106,13 +106,16 @@ class ContactSolver {
 
  private:
   struct Cached {
+    BodyId a, b;
     uint64_t key;
     double lambda_n;
-    Vec3 tangential;  // lambda_t t + lambda_b b, world frame
+    Vec3 tangential;                        // lambda_t t + lambda_b b, world frame
+    bool operator<(const Cached& o) const;  // by (a, b, key)
   };
 
   void prepareContact(const Contact& c, ContactRow& row) const;
-  void warmStartRow(uint64_t key, ContactRow& row, size_t index) const;
+  const Cached* findCached(const Contact& c, size_t& cursor) const;
+  void warmStartRow(const Cached& cached, ContactRow& row, size_t index) const;
   void scheduleRows();
   void warmStart();
   void warmStartJoints();
