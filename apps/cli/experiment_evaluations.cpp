@@ -280,16 +280,18 @@ std::vector<Experiment> experimentEntries() {
                    {"chain_bolas_smooth.json", 3.0, bolas_smooth}},
                   evaluateChainBolas});
   const PaperRow bunnies = paperRow(4, 1, 0.1, 0.02, 10, 10, 3.5, 0.13, 1.7);
-  list.push_back({"tumbling_bunnies",
-                  "Tumbling bunnies",
-                  "Sec. 5.4, Fig. 16: bunnies launched down an incline that is smooth but for an "
-                  "embossed teapot logo (plane gain 10): the rough stone bunny sticks at once and "
-                  "falls over; the metal and plastic bunnies slide, then tumble at the logo's "
-                  "ridge.",
-                  "the stone bunny travels least (under 0.25 m) and rotates over 45 degrees; metal "
-                  "and plastic stay under 45 degrees until they reach the logo and exceed it on it",
-                  {{"tumbling_bunnies.json", 2.5, bunnies}},
-                  evaluateBunnies});
+  list.push_back(
+      {"tumbling_bunnies",
+       "Tumbling bunnies",
+       "Sec. 5.4, Fig. 16: bunnies launched down an incline that is smooth but for an "
+       "embossed teapot logo (plane gain 10): the rough stone bunny sticks at once and "
+       "falls over; the metal and plastic bunnies slide, then tumble at the logo's "
+       "ridge.",
+       "the stone bunny travels less than a third of the others' runs and rotates over 45 "
+       "degrees; metal "
+       "and plastic stay under 45 degrees until they reach the logo and exceed it on it",
+       {{"tumbling_bunnies.json", 2.5, bunnies}},
+       evaluateBunnies});
   const PaperRow nut = paperRow(6, 1, 0.05, 0.004, 1, 50, 38.1, 0.54, 2.2);
   list.push_back({"nut_bolt",
                   "Nut and bolt (M4)",

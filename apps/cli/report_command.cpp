@@ -29,7 +29,7 @@ struct ReportOptions {
   std::string scenes_dir = "scenes";
   std::string sampler;
   std::vector<std::string> only;
-  bool frames = false;
+  bool frames = true;  // when built with the renderer
 };
 
 const char* const kStyle = R"(
@@ -106,8 +106,9 @@ std::string tableOne(const std::vector<Experiment>& list, const std::vector<Outc
   return s + "</table>";
 }
 
-// One frame of the experiment's first scene through `asperity render`, when built with the
-// renderer and --frames was given; "" when there is none.
+// One frame of the experiment's first scene, half-way through, from `asperity render` (this
+// same executable) when built with the renderer; "" when there is none or rendering fails
+// (no GL context): the page then goes without pictures.
 std::string renderFrame(const ReportOptions& opt, const Experiment& e, const fs::path& dir) {
 #if ASPERITY_HAVE_RENDER
   if (!opt.frames || e.scenes.empty()) return "";
@@ -210,7 +211,8 @@ void registerReportCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--sampler", opt->sampler, "Friction sampler override (constant, cone, cpu...)");
   sub->add_option("--only", opt->only, "Only these experiment ids");
-  sub->add_flag("--frames", opt->frames, "Include one rendered frame per experiment");
+  sub->add_flag("--frames,!--no-frames", opt->frames,
+                "One rendered frame per experiment (default, when built with the renderer)");
   sub->callback([opt] { writeReport(*opt); });
 }
 
