@@ -18,6 +18,18 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Narrows b's window to the union of a's primitive bounds (empty when a has none).
+void narrowToFootprint(const patch::SurfaceRaster& a, patch::SurfaceRaster& b) {
+  int i0 = b.wi1 + 1, i1 = -1, j0 = b.wj1 + 1, j1 = -1;
+  auto grow = [&](int pi0, int pi1, int pj0, int pj1) {
+    i0 = std::min(i0, pi0), i1 = std::max(i1, pi1), j0 = std::min(j0, pj0), j1 = std::max(j1, pj1);
+  };
+  for (const patch::Planar& p : a.planars) grow(p.i0, p.i1, p.j0, p.j1);
+  for (const patch::Curved& c : a.curveds) grow(c.i0, c.i1, c.j0, c.j1);
+  b.wi0 = std::max(b.wi0, i0), b.wi1 = std::min(b.wi1, i1);
+  b.wj0 = std::max(b.wj0, j0), b.wj1 = std::min(b.wj1, j1);
+}
+
 double msBetween(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
@@ -37,7 +49,7 @@ struct CpuPatchSampler::State {
   double patch_ms = 0.0, averaging_ms = 0.0;
 
   void prepare(const FrictionSettings& settings);
-  void rasterise(const patch::Volume& volume, const patch::ShapeRange (&ranges)[2]);
+  void rasterise(const patch::Volume& volume, const patch::ShapeRange (&ranges)[2], bool whole);
   void sample(std::span<const Body> bodies, Contact& contact, const FrictionSettings& settings,
               PatchImages* images);
   void fillImages(const patch::Volume& volume, const FrictionSettings& settings,
@@ -58,25 +70,27 @@ void CpuPatchSampler::State::prepare(const FrictionSettings& settings) {
 }
 
 void CpuPatchSampler::State::rasterise(const patch::Volume& volume,
-                                       const patch::ShapeRange (&ranges)[2]) {
-  const int pixels = volume.resolution * volume.resolution;
-  // Each surface's shapes into its raster, then P: pixels covered by both.
+                                       const patch::ShapeRange (&ranges)[2], bool whole) {
+  // A first; unless both whole images are wanted, B only where A may have fragments (the
+  // union of A's primitive bounds), since only P counts.
   for (int s = 0; s < 2; ++s) {
     patch::SurfaceRaster& r = raster[static_cast<size_t>(s)];
-    r.reset(s == 0 ? Side::A : Side::B, pixels);
+    r.reset(s == 0 ? Side::A : Side::B, volume.resolution);
+    if (s == 1 && !whole) narrowToFootprint(raster[0], r);
     const patch::ShapeRange& range = ranges[s];
-    for (int k = range.first; k < range.last; ++k) {
+    for (int k = range.first; k < range.last && r.wi0 <= r.wi1 && r.wj0 <= r.wj1; ++k) {
       patch::rasteriseShape(volume, range.body->shapes[static_cast<size_t>(k)],
                             patch::shapePose(*range.body, k), meshes, geometry, r);
     }
   }
-  // Branch-free append into a buffer of R x R entries.
-  in_patch.resize(static_cast<size_t>(pixels));
+  // P: pixels of the window covered by both, appended branch-free.
+  const patch::SurfaceRaster& b = raster[1];
+  in_patch.resize(static_cast<size_t>(volume.resolution * volume.resolution));
   size_t count = 0;
   const float* key_a = raster[0].key.data();
-  const float* key_b = raster[1].key.data();
-  for (int j = 0; j < volume.resolution; ++j) {
-    for (int i = 0; i < volume.resolution; ++i) {
+  const float* key_b = b.key.data();
+  for (int j = b.wj0; j <= b.wj1; ++j) {
+    for (int i = b.wi0; i <= b.wi1; ++i) {
       const int p = j * volume.resolution + i;
       in_patch[count] = patch::Volume::pack(i, j);
       count += static_cast<size_t>(key_a[p] > patch::SurfaceRaster::kEmpty) &
@@ -123,7 +137,7 @@ void CpuPatchSampler::State::sample(std::span<const Body> bodies, Contact& conta
   const patch::ShapeRange ranges[2] = {patch::shapesOf(bodies, contact, Side::A),
                                        patch::shapesOf(bodies, contact, Side::B)};
   // Rasterise both surfaces and find P, then shade P into ploughing vectors (A, then B).
-  rasterise(volume, ranges);
+  rasterise(volume, ranges, images != nullptr);
   const size_t count = in_patch.size();
   const size_t n = directions.size();
   for (size_t s = 0; s < 2 && count > 0; ++s) {

@@ -82,8 +82,11 @@ void setFloatUv(Planar& prim) {
              static_cast<float>(prim.v.dy)};
 }
 
-void SurfaceRaster::reset(Side s, int pixels) {
+void SurfaceRaster::reset(Side s, int resolution) {
+  const int pixels = resolution * resolution;
   side = s;
+  wi0 = wj0 = 0;
+  wi1 = wj1 = resolution - 1;
   key.assign(static_cast<size_t>(pixels), kEmpty);
   primitive.resize(static_cast<size_t>(pixels));
   planars.clear();
@@ -177,10 +180,12 @@ void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, Surfa
   const double h = volume.half_depth;
   const float sign = raster.side == Side::B ? 1.0f : -1.0f;
   constexpr double kBig = std::numeric_limits<double>::max();
+  const int i0 = std::max(prim.i0, raster.wi0), i1 = std::min(prim.i1, raster.wi1);
+  const int j0 = std::max(prim.j0, raster.wj0), j1 = std::min(prim.j1, raster.wj1);
   // Small primitives (mesh triangles near pixel size): the exact test per pixel is cheaper.
-  if ((prim.i1 - prim.i0 + 1) * (prim.j1 - prim.j0 + 1) <= 9) {
-    for (int j = prim.j0; j <= prim.j1; ++j) {
-      for (int i = prim.i0; i <= prim.i1; ++i) {
+  if ((i1 - i0 + 1) * (j1 - j0 + 1) <= 9) {
+    for (int j = j0; j <= j1; ++j) {
+      for (int i = i0; i <= i1; ++i) {
         const double x = volume.centreX(i), y = volume.centreX(j);
         if (!insidePlanar(prim, h, x, y)) continue;
         const size_t idx = static_cast<size_t>(j * r + i);
@@ -193,10 +198,10 @@ void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, Surfa
     }
     return;
   }
-  for (int j = prim.j0; j <= prim.j1; ++j) {
+  for (int j = j0; j <= j1; ++j) {
     const double y = volume.centreX(j);
     // The row's span: every edge and the depth clip bound x from one side or both.
-    int lo = prim.i0, hi = prim.i1;
+    int lo = i0, hi = i1;
     for (int k = 0; k < prim.edge_count && lo <= hi; ++k) {
       const Edge& e = prim.edges[static_cast<size_t>(k)];
       clipSpan(volume, e.a, -(e.b * y + e.c), kBig, lo, hi);
@@ -257,9 +262,11 @@ bool castCurved(const Curved& prim, Side side, double x, double y, double& z) {
 void rasteriseCurved(const Volume& volume, const Curved& prim, int32_t id, SurfaceRaster& raster) {
   const int r = volume.resolution;
   const float sign = raster.side == Side::B ? 1.0f : -1.0f;
-  for (int j = prim.j0; j <= prim.j1; ++j) {
+  const int i0 = std::max(prim.i0, raster.wi0), i1 = std::min(prim.i1, raster.wi1);
+  const int j0 = std::max(prim.j0, raster.wj0), j1 = std::min(prim.j1, raster.wj1);
+  for (int j = j0; j <= j1; ++j) {
     const double y = volume.centreX(j);
-    for (int i = prim.i0; i <= prim.i1; ++i) {
+    for (int i = i0; i <= i1; ++i) {
       const double x = volume.centreX(i);
       double z = 0.0;
       // Depth clip, then keep the fragment nearest the other body.

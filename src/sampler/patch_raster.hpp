@@ -93,8 +93,11 @@ struct SurfaceRaster {
       primitive;  // >= 0 planar index, < 0: curved index -1 - p; unused if key=-inf
   std::vector<Planar> planars;
   std::vector<Curved> curveds;
+  // Only pixels in this window are rasterised (all after reset): the sampler narrows it to the
+  // other surface's footprint when only P matters.
+  int wi0 = 0, wi1 = -1, wj0 = 0, wj1 = -1;
 
-  void reset(Side s, int pixels);
+  void reset(Side s, int resolution);
   bool covered(int pixel) const { return key[static_cast<size_t>(pixel)] > kEmpty; }
   static constexpr float kEmpty = -3.0e38f;
 };
