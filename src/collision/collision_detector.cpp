@@ -327,9 +327,13 @@ CollisionDetector::CollisionDetector() : impl_(std::make_unique<Impl>()) {}
 CollisionDetector::~CollisionDetector() = default;
 
 void CollisionDetector::setBodies(std::span<const Body> bodies, const CollisionSettings& settings) {
+  // Settings first: each bad one named.
   if (settings.sdf_max_contacts < 1) {
     throw Error("collision: sdf_max_contacts must be at least 1");
   }
+  if (settings.sdf_resolution < 4) throw Error("collision: sdf_resolution must be at least 4");
+  if (!(settings.contact_margin >= 0)) throw Error("collision: contact_margin must be >= 0");
+  if (!(settings.sdf_min_spacing >= 0)) throw Error("collision: sdf_min_spacing must be >= 0");
   Impl& s = *impl_;
   s.release();
   s.settings = settings;

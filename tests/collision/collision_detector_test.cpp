@@ -385,6 +385,15 @@ TEST(CollisionDetector, BadInputIsReported) {
   empty_mesh.shapes[0].mesh = nullptr;
   const std::vector<Body> bad_mesh = {empty_mesh};
   EXPECT_THROW(detector.setBodies(bad_mesh, {}), Error);
+  // Settings out of range.
+  for (int which = 0; which < 4; ++which) {
+    CollisionSettings bad_settings;
+    if (which == 0) bad_settings.sdf_max_contacts = 0;
+    if (which == 1) bad_settings.sdf_resolution = 2;
+    if (which == 2) bad_settings.contact_margin = -1e-3;
+    if (which == 3) bad_settings.sdf_min_spacing = -1;
+    EXPECT_THROW(detector.setBodies(std::vector<Body>{groundPlane()}, bad_settings), Error);
+  }
   // detect with another body count than setBodies.
   const std::vector<Body> one = {groundPlane()};
   detector.setBodies(one, {});
