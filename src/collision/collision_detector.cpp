@@ -183,6 +183,7 @@ struct CollisionDetector::Impl {
     return f.get();
   }
 
+  void build(std::span<const Body> bodies);
   void createWorld();
   void addBody(BodyId id, const Body& body);
   void collectManifolds();
@@ -341,19 +342,29 @@ void CollisionDetector::setBodies(std::span<const Body> bodies, const CollisionS
   s.sdf.reset(settings);
   s.contacts.clear();
   s.body_types.clear();
-  s.createWorld();
+  try {
+    s.build(bodies);
+  } catch (...) {
+    // A shape that cannot be built leaves an empty detector, not half of one.
+    s.release();
+    s.body_types.clear();
+    throw;
+  }
+}
+
+void CollisionDetector::Impl::build(std::span<const Body> bodies) {
+  createWorld();
   // Records for every shape of every body, then the Bullet objects.
   for (size_t b = 0; b < bodies.size(); ++b) {
-    const Body& body = bodies[b];
-    s.body_types.push_back(body.type);
-    s.addBody(static_cast<BodyId>(b), body);
+    body_types.push_back(bodies[b].type);
+    addBody(static_cast<BodyId>(b), bodies[b]);
   }
-  for (ShapeRecord& rec : s.records) {
-    s.world->addCollisionObject(rec.object.get());
+  for (ShapeRecord& rec : records) {
+    world->addCollisionObject(rec.object.get());
     // Fields of dynamic closed meshes now rather than in the first step (static ones on use).
     if (settings.mesh_pairs == MeshPairMode::Auto && rec.closed_mesh &&
         rec.body_type == BodyType::Dynamic) {
-      s.sdf.field(rec);
+      sdf.field(rec);
     }
   }
 }

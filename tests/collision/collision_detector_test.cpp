@@ -394,6 +394,10 @@ TEST(CollisionDetector, BadInputIsReported) {
     if (which == 3) bad_settings.sdf_min_spacing = -1;
     EXPECT_THROW(detector.setBodies(std::vector<Body>{groundPlane()}, bad_settings), Error);
   }
+  // After a failed setBodies the detector is empty.
+  EXPECT_THROW(detector.setBodies(bad_mesh, {}), Error);
+  EXPECT_THROW(detector.detect(bad_mesh), Error);
+  EXPECT_TRUE(detector.detect(std::vector<Body>{}).empty());
   // detect with another body count than setBodies.
   const std::vector<Body> one = {groundPlane()};
   detector.setBodies(one, {});
