@@ -128,6 +128,13 @@ std::string renderFrame(const ReportOptions& opt, const Experiment& e, const fs:
 #endif
 }
 
+// Seconds as "%g" (3, 0.45), not std::to_string's "3.000000".
+std::string seconds(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%g", s);
+  return buffer;
+}
+
 std::string experimentSection(const Experiment& e, const Outcome& out, const std::string& image) {
   std::string s = "<section id='" + e.id + "'><h2>" + htmlEscape(e.title) + "<span class='badge " +
                   (out.passed ? "pass'>reproduced" : "fail'>not reproduced") + "</span></h2>";
@@ -140,8 +147,7 @@ std::string experimentSection(const Experiment& e, const Outcome& out, const std
   s += "</div>" + measuresTable(out);
   s += "<p class='sub'>Scenes:";
   for (const auto& run : e.scenes)
-    s +=
-        " <code>scenes/" + htmlEscape(run.file) + "</code> (" + std::to_string(run.seconds) + " s)";
+    s += " <code>scenes/" + htmlEscape(run.file) + "</code> (" + seconds(run.seconds) + " s)";
   return s + "</p></section>";
 }
 
