@@ -21,9 +21,12 @@
 namespace asperity {
 
 struct GlSamplerOptions {
-  int atlas_size = 1024;             // frame buffer side (pixels)
-  bool float_targets = false;        // RGBA32F instead of RGBA8
-  bool use_current_context = false;  // render with the caller's current context (e.g. viewer)
+  int atlas_size = 1024;       // frame buffer side (pixels)
+  bool float_targets = false;  // RGBA32F instead of RGBA8
+  // Render with the caller's current context (e.g. the viewer's); the sampler restores the
+  // frame buffer, program, vertex array, viewport and depth/cull/blend state it changes.
+  // Otherwise it owns a headless context and makes it current in each call (leaving it so).
+  bool use_current_context = false;
 };
 
 class GlPatchSampler : public FrictionProvider {

@@ -3,6 +3,9 @@
 // means failing tests, not skipped ones.
 #include "asperity/sampler/gl_patch_sampler.hpp"
 
+#include <epoxy/gl.h>
+
+#include "asperity/gl/context.hpp"
 #include "asperity/sampler/cpu_patch_sampler.hpp"
 #include "sampler/sampler_suite.hpp"
 
@@ -76,6 +79,32 @@ TEST(GlPatchSampler, FloatTargetsAgreeWithCpuForManyDirections) {
   GlSamplerOptions o;
   o.float_targets = true;
   expectAgreement(o, 32, 3e-3);
+}
+
+// With the caller's context the sampler gives the same numbers and leaves its GL state alone.
+TEST(GlPatchSampler, UsesAndRestoresTheCallersContext) {
+  gl::GlContext context;
+  GLuint fbo = 0;
+  glGenFramebuffers(1, &fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glViewport(1, 2, 3, 4);
+  GlSamplerOptions o;
+  o.use_current_context = true;
+  GlPatchSampler sampler(o);
+  Scene scene{{planeBody(roughMap(8, 1), 0.1, 1.0),
+               boxBody(Vec3(0.1, 0.1, 0.1), {Vec3(0, 0, 0.1)}, roughMap(8, 2), 0.1, 1.0)},
+              contactAt(Vec3(0.1, 0.1, 0.0), 1e-4)};
+  std::vector<Contact> gl{scene.contact}, cpu{scene.contact};
+  sampler.computeCoefficients(scene.bodies, gl, settings());
+  CpuPatchSampler().computeCoefficients(scene.bodies, cpu, settings());
+  for (int k = 0; k < 4; ++k) EXPECT_NEAR(gl[0].mu.mu[k], cpu[0].mu.mu[k], 4.0 / 255.0);
+  GLint bound = 0, viewport[4] = {};
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  EXPECT_EQ(static_cast<GLuint>(bound), fbo);
+  EXPECT_EQ(viewport[2], 3);
+  EXPECT_TRUE(context.isCurrent());
+  glDeleteFramebuffers(1, &fbo);
 }
 
 TEST(GlPatchSampler, ReportsRendererAndRejectsBadAtlas) {
