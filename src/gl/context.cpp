@@ -138,7 +138,6 @@ GlContext::GlContext(const GlContextOptions& options) {
     const EGLint any[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
     if (!surfaceless || eglChooseConfig(display, any, &config, 1, &num_configs) != EGL_TRUE ||
         num_configs == 0) {
-      eglTerminate(display);
       throw Error("OpenGL: no EGL config for desktop OpenGL on the " + platform_ + " display (" +
                   eglErrorText() + ")");
     }
@@ -157,7 +156,6 @@ GlContext::GlContext(const GlContextOptions& options) {
   EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, context_attribs);
   if (context == EGL_NO_CONTEXT) {
     const std::string why = eglErrorText();
-    eglTerminate(display);
     throw Error("OpenGL: cannot create a " + std::to_string(options.major) + "." +
                 std::to_string(options.minor) + " core context on the " + platform_ + " display (" +
                 why + ")");
@@ -171,7 +169,6 @@ GlContext::GlContext(const GlContextOptions& options) {
     if (surface_ == EGL_NO_SURFACE) {
       const std::string why = eglErrorText();
       eglDestroyContext(display, context);
-      eglTerminate(display);
       throw Error("OpenGL: cannot create a pbuffer surface (" + why + ")");
     }
   }
@@ -181,10 +178,14 @@ GlContext::GlContext(const GlContextOptions& options) {
 
 GlContext::~GlContext() {
   EGLDisplay display = display_;
-  eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  // Release only this context: another one may be current on this thread.
+  if (eglGetCurrentContext() == context_)
+    eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   if (surface_ != nullptr) eglDestroySurface(display, surface_);
   eglDestroyContext(display, context_);
-  // Mesa reference-counts nothing here: terminating would kill other contexts on the display.
+  // The display stays initialised: EGL displays are shared per process, and terminating one
+  // would destroy every other context on it (failure paths above leave it alone for the same
+  // reason).
 }
 
 void GlContext::makeCurrent() const {

@@ -94,10 +94,16 @@ void Renderer::Impl::makeTargets(const RendererOptions& o) {
   msaa_fbo = std::make_unique<gl::Framebuffer>();
   msaa_color = std::make_unique<gl::Renderbuffer>();
   msaa_depth = std::make_unique<gl::Renderbuffer>();
-  glBindRenderbuffer(GL_RENDERBUFFER, *msaa_color);
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
-  glBindRenderbuffer(GL_RENDERBUFFER, *msaa_depth);
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
+  // One sample means plain storage: drivers may round a multisample count of 1 up to 4.
+  for (auto [buffer, format] :
+       {std::pair{msaa_color.get(), GL_RGBA8}, std::pair{msaa_depth.get(), GL_DEPTH_COMPONENT24}}) {
+    glBindRenderbuffer(GL_RENDERBUFFER, *buffer);
+    if (samples > 1) {
+      glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
+    } else {
+      glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+    }
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, *msaa_fbo);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, *msaa_color);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, *msaa_depth);

@@ -44,7 +44,7 @@ VideoWriter::VideoWriter(const std::string& path, int width, int height, double 
   std::ostringstream command;
   command << shellQuote(ffmpeg) << " -y -loglevel error -f rawvideo -pix_fmt rgb24 -s " << width
           << "x" << height << " -r " << fps
-          << " -i - -vf pad=ceil(iw/2)*2:ceil(ih/2)*2 -c:v libx264 -preset medium -crf 18"
+          << " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -preset medium -crf 18"
           << " -pix_fmt yuv420p -movflags +faststart " << shellQuote(path);
   // A closed pipe must surface as an error from write(), not kill the process.
   std::signal(SIGPIPE, SIG_IGN);

@@ -1,0 +1,173 @@
+// The renderer on llvmpipe: images are lit, normal maps change shading only where the texture
+// is rough, debug points land where they project, frames are reproducible.
+#include "asperity/render/renderer.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "asperity/error.hpp"
+#include "asperity/geometry/shape_mesh.hpp"
+#include "render_test_support.hpp"
+#include "support/test_support.hpp"
+
+namespace asperity {
+namespace {
+
+constexpr int kWidth = 160;
+constexpr int kHeight = 120;
+
+// A ground plane and a 0.2 m cube resting on it, seen from the default framing.
+render::RenderScene groundAndCube(std::shared_ptr<const NormalMap> ground_map) {
+  render::RenderScene scene;
+  Shape plane;
+  plane.type = ShapeType::Plane;
+  ShapeMeshOptions mesh_options;
+  mesh_options.plane_size = 4.0;
+  render::RenderItem ground;
+  ground.mesh = std::make_shared<const ShapeMesh>(buildShapeMesh(plane, mesh_options));
+  ground.normal_map = std::move(ground_map);
+  ground.ground = true;
+  scene.items.push_back(ground);
+  Shape box;
+  box.half_extents = Vec3(0.1, 0.1, 0.1);
+  render::RenderItem cube;
+  cube.mesh = std::make_shared<const ShapeMesh>(buildShapeMesh(box));
+  cube.pose.position = Vec3(0.0, 0.0, 0.1);
+  cube.base_color = Vec3(0.8, 0.3, 0.2);
+  scene.items.push_back(cube);
+  scene.focus = Eigen::AlignedBox3d(Vec3(-0.3, -0.3, 0.0), Vec3(0.3, 0.3, 0.2));
+  return scene;
+}
+
+render::Image draw(const render::RenderScene& scene, const render::Camera& camera,
+                   render::RendererOptions options = {}) {
+  test::sharedContext();
+  options.width = kWidth;
+  options.height = kHeight;
+  render::Renderer renderer(options);
+  renderer.render(scene, camera);
+  return renderer.readPixels();
+}
+
+render::Camera cameraFor(const render::RenderScene& scene) {
+  return render::frameBox(scene.focus, double(kWidth) / kHeight, 2.0);
+}
+
+TEST(Renderer, ImageIsLitAndNotBlank) {
+  const render::RenderScene scene = groundAndCube(nullptr);
+  const render::Image image = draw(scene, cameraFor(scene));
+  ASSERT_EQ(image.rgb.size(), size_t(kWidth) * kHeight * 3);
+  EXPECT_GT(test::luminanceDeviation(image), 10.0);
+  // The cube's colour (reddish) is at the image centre, where the camera looks.
+  const uint8_t* centre = image.pixel(kWidth / 2, kHeight / 2);
+  EXPECT_GT(int(centre[0]), int(centre[2]) + 30);
+}
+
+TEST(Renderer, FlatNormalMapMatchesNoNormalMapAndRoughOneDiffers) {
+  const render::RenderScene none = groundAndCube(nullptr);
+  const render::RenderScene flat = groundAndCube(std::make_shared<const NormalMap>(16, 16));
+  const render::RenderScene rough = groundAndCube(test::roughMap());
+  const render::Camera camera = cameraFor(none);
+  const render::Image a = draw(none, camera);
+  // A map of (0, 0, 1) everywhere is the macro normal: the same picture, to rounding.
+  EXPECT_LT(test::meanAbsDifference(a, draw(flat, camera)), 0.5);
+  // Rough texels tilt the shading normal: the ground changes visibly.
+  EXPECT_GT(test::meanAbsDifference(a, draw(rough, camera)), 3.0);
+  // Switching normal maps off renders the rough scene flat-shaded again.
+  render::RendererOptions off;
+  off.normal_maps = false;
+  EXPECT_LT(test::meanAbsDifference(a, draw(rough, camera, off)), 0.5);
+}
+
+TEST(Renderer, RoughTextureAddsShadingVariationOnTheGround) {
+  // Same view of the ground only (no cube): rough texels make the lit ground vary.
+  render::RenderScene flat = groundAndCube(nullptr);
+  render::RenderScene rough = groundAndCube(test::roughMap());
+  flat.items.pop_back();
+  rough.items.pop_back();
+  render::Camera camera;
+  camera.eye = Vec3(0.0, -0.4, 0.5);
+  camera.target = Vec3::Zero();
+  render::RendererOptions options;
+  options.grid_step = 100.0;  // no grid lines in view
+  EXPECT_GT(test::luminanceDeviation(draw(rough, camera, options)),
+            2.0 * test::luminanceDeviation(draw(flat, camera, options)) + 2.0);
+}
+
+TEST(Renderer, DebugPointIsDrawnWhereItProjects) {
+  render::RenderScene scene = groundAndCube(nullptr);
+  const Vec3 corner(0.1, -0.1, 0.0);  // a bottom corner of the cube: where contacts sit
+  const Vec3 magenta(1.0, 0.0, 1.0);
+  scene.debug.points.push_back({corner, magenta, 9.0f});
+  const render::Camera camera = cameraFor(scene);
+  const Eigen::Vector3d p = camera.project(corner, kWidth, kHeight);
+  ASSERT_GT(p.z(), 0.0);
+  const int x = static_cast<int>(p.x()), y = static_cast<int>(p.y());
+  ASSERT_TRUE(x >= 0 && x < kWidth && y >= 0 && y < kHeight);
+  const render::Image with = draw(scene, camera);
+  const uint8_t* px = with.pixel(x, y);
+  EXPECT_GT(px[0], 230);
+  EXPECT_LT(px[1], 25);
+  EXPECT_GT(px[2], 230);
+  // Without the point that pixel is not magenta.
+  scene.debug.clear();
+  const uint8_t* plain = draw(scene, camera).pixel(x, y);
+  EXPECT_FALSE(plain[0] > 230 && plain[1] < 25 && plain[2] > 230);
+}
+
+TEST(Renderer, SameFrameTwiceGivesTheSamePixels) {
+  const render::RenderScene scene = groundAndCube(test::roughMap());
+  const render::Camera camera = cameraFor(scene);
+  test::sharedContext();
+  render::RendererOptions options;
+  options.width = kWidth;
+  options.height = kHeight;
+  render::Renderer renderer(options);
+  renderer.render(scene, camera);
+  const render::Image first = renderer.readPixels();
+  renderer.render(scene, camera);
+  EXPECT_EQ(first.rgb, renderer.readPixels().rgb);
+  // A fresh renderer gives the same frame too.
+  EXPECT_EQ(first.rgb, draw(scene, camera).rgb);
+}
+
+TEST(Renderer, MsaaSmoothsEdges) {
+  // With 4 samples some edge pixels take in-between values that 1 sample never produces.
+  const render::RenderScene scene = groundAndCube(nullptr);
+  const render::Camera camera = cameraFor(scene);
+  render::RendererOptions one, four;
+  one.samples = 1;
+  four.samples = 4;
+  EXPECT_GT(test::meanAbsDifference(draw(scene, camera, one), draw(scene, camera, four)), 0.05);
+}
+
+TEST(Renderer, BadSizesAreErrors) {
+  test::sharedContext();
+  render::RendererOptions options;
+  options.width = 0;
+  EXPECT_THROW(render::Renderer{options}, Error);
+  options.width = 64;
+  options.height = 20000;
+  EXPECT_THROW(render::Renderer{options}, Error);
+  options.height = 64;
+  options.samples = 0;
+  EXPECT_THROW(render::Renderer{options}, Error);
+}
+
+TEST(Renderer, SavePngWritesAndNamesUnwritablePaths) {
+  const render::RenderScene scene = groundAndCube(nullptr);
+  const render::Image image = draw(scene, cameraFor(scene));
+  const std::string path = test::tempDir("png") + "/frame.png";
+  render::savePng(image, path);
+  EXPECT_GT(std::filesystem::file_size(path), 100u);
+  try {
+    render::savePng(image, "/nonexistent-folder/frame.png");
+    FAIL() << "wrote into a missing folder";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent-folder/frame.png"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace asperity

@@ -1,0 +1,62 @@
+// The viewer under Xvfb: a few frames of a scene, then a screenshot that is not blank.
+#include <gtest/gtest.h>
+#include <stb/stb_image.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "support/test_support.hpp"
+
+namespace asperity {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Runs a shell command line; returns its exit status.
+int shell(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+TEST(Viewer, RendersFramesUnderXvfbAndTakesAScreenshot) {
+  // Xvfb is part of the dependencies (scripts/install-deps.sh): its absence is a failure.
+  ASSERT_EQ(shell("command -v xvfb-run >/dev/null"), 0) << "xvfb-run is missing (package xvfb)";
+  const std::string dir = test::tempDir("viewer");
+  const std::string shot = dir + "/shot.png";
+  const std::string command = "xvfb-run -a -s '-screen 0 640x480x24' '" +
+                              std::string(ASPERITY_BIN_DIR) + "/asperity-viewer' '" +
+                              test::sourcePath("scenes/examples/minimal.json") +
+                              "' --width 320 --height 240 --frames 5 --screenshot '" + shot +
+                              "' >" + dir + "/out 2>" + dir + "/err";
+  ASSERT_EQ(shell(command), 0) << "viewer failed; see " << dir << "/err";
+  // A lit scene with panels: many distinct grey levels, not one flat colour.
+  int w = 0, h = 0, channels = 0;
+  unsigned char* pixels = stbi_load(shot.c_str(), &w, &h, &channels, 3);
+  ASSERT_NE(pixels, nullptr) << shot;
+  EXPECT_EQ(w, 320);
+  EXPECT_EQ(h, 240);
+  double sum = 0.0, sum2 = 0.0;
+  for (int i = 0; i < w * h; ++i) {
+    const double y = 0.3 * pixels[3 * i] + 0.59 * pixels[3 * i + 1] + 0.11 * pixels[3 * i + 2];
+    sum += y;
+    sum2 += y * y;
+  }
+  stbi_image_free(pixels);
+  const double mean = sum / (w * h);
+  EXPECT_GT(std::sqrt(sum2 / (w * h) - mean * mean), 10.0);
+}
+
+TEST(Viewer, MissingSceneIsAOneLineError) {
+  ASSERT_EQ(shell("command -v xvfb-run >/dev/null"), 0) << "xvfb-run is missing (package xvfb)";
+  const std::string dir = test::tempDir("viewer");
+  const std::string command = "xvfb-run -a '" + std::string(ASPERITY_BIN_DIR) +
+                              "/asperity-viewer' /nonexistent.json --frames 1 >" + dir + "/out 2>" +
+                              dir + "/err";
+  EXPECT_NE(shell(command), 0);
+}
+
+}  // namespace
+}  // namespace asperity
