@@ -17,6 +17,7 @@
 #include "asperity/render/renderer.hpp"
 #include "asperity/render/video_writer.hpp"
 #include "asperity/render/world_view.hpp"
+#include "asperity/sampler/gl_patch_sampler.hpp"
 #include "asperity/scene/friction_registry.hpp"
 #include "asperity/scene/scene.hpp"
 namespace asperity::cli {
@@ -117,7 +118,8 @@ void runRender(const RenderCommandOptions& o) {
                 ": ffmpeg is not on PATH (install Debian's ffmpeg package, or write PNG frames: "
                 "--out DIR/)");
 
-  // The world, with the chosen friction sampler.
+  // The world, with the chosen friction sampler ("gl" included).
+  registerGlPatchSampler();
   SceneDesc scene = loadScene(o.scene);
   if (!o.sampler.empty()) {
     makeFrictionProvider(o.sampler);  // throws for an unknown name, listing the known ones
@@ -138,6 +140,7 @@ void runRender(const RenderCommandOptions& o) {
   render::RenderScene frame_scene;
   auto renderAt = [&](double t) {
     advanceTo(*world, t);
+    context.makeCurrent();  // the "gl" sampler may have made its own context current
     view.update(*world, view_options, frame_scene);
     renderer.render(frame_scene, cam);
     return renderer.readPixels();

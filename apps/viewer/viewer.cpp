@@ -12,6 +12,7 @@
 
 #include "asperity/error.hpp"
 #include "asperity/gl/context.hpp"
+#include "asperity/sampler/gl_patch_sampler.hpp"
 #include "asperity/scene/friction_registry.hpp"
 
 namespace asperity::viewer {
@@ -57,6 +58,12 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options), playing_(optio
   ro.height = options.height;
   ro.samples = options.samples;
   renderer_ = std::make_unique<render::Renderer>(ro);
+  // The "gl" patch sampler draws with the window's context (it restores the state it changes).
+  registerFrictionProvider("gl", [] {
+    GlSamplerOptions gl_options;
+    gl_options.use_current_context = true;
+    return std::make_unique<GlPatchSampler>(gl_options);
+  });
   preview_ = std::make_unique<SurfacePreview>();
   view_options_.debug.layers = kLayerContacts;
   loadScene(options.scene);
