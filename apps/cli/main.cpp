@@ -4,6 +4,7 @@
 namespace asperity::cli {
 void registerRenderCommand(CLI::App& app);  // apps/cli/render_command.cpp
 void registerRunCommand(CLI::App& app);     // apps/cli/run_command.cpp
+void registerPatchCommand(CLI::App& app);   // apps/cli/patch_command.cpp
 void registerBenchCommand(CLI::App& app);   // apps/cli/bench_command.cpp
 void registerReportCommand(CLI::App& app);  // apps/cli/report_command.cpp
 }  // namespace asperity::cli
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
   asperity::cli::registerTextureCommand(app);
   asperity::cli::registerConeCommand(app);
   asperity::cli::registerRunCommand(app);
+  asperity::cli::registerPatchCommand(app);
   asperity::cli::registerRenderCommand(app);
   asperity::cli::registerBenchCommand(app);
   asperity::cli::registerReportCommand(app);
