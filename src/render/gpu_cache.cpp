@@ -3,6 +3,8 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace asperity::render {
@@ -70,11 +72,20 @@ GLuint TextureCache::get(const std::shared_ptr<const NormalMap>& map) {
   if (it != entries_.end()) entries_.erase(it);
   Entry& entry = entries_[map.get()];
   entry.source = map;
-  // Unit vectors as floats; mipmaps average them (the shader renormalises).
+  // Unit vectors packed as 0.5 m + 0.5 in RGBA8 (what 8-bit PNG maps hold; the fastest format
+  // to filter on software rasterisers); mipmaps average them, the shader renormalises.
+  std::vector<uint8_t> packed;
+  packed.reserve(map->texels().size() * 4);
+  for (const Vec3f& m : map->texels()) {
+    for (int c = 0; c < 3; ++c)
+      packed.push_back(
+          static_cast<uint8_t>(std::lround(std::clamp(127.5f * (m[c] + 1.0f), 0.0f, 255.0f))));
+    packed.push_back(255);
+  }
   glBindTexture(GL_TEXTURE_2D, entry.texture);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16F, map->width(), map->height(), 0, GL_RGB, GL_FLOAT,
-               map->texels().data());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, map->width(), map->height(), 0, GL_RGBA,
+               GL_UNSIGNED_BYTE, packed.data());
   glGenerateMipmap(GL_TEXTURE_2D);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
@@ -82,7 +93,7 @@ GLuint TextureCache::get(const std::shared_ptr<const NormalMap>& map) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   // Anisotropic filtering keeps grazing views of rough ground sharp.
   if (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))
-    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 8.0f);
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 4.0f);
   glBindTexture(GL_TEXTURE_2D, 0);
   return entry.texture;
 }

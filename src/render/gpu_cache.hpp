@@ -34,7 +34,7 @@ class MeshCache {
 
 class TextureCache {
  public:
-  // A mipmapped, repeating RGB16F texture of the map's unit vectors (rows bottom-up as stored).
+  // A mipmapped, repeating RGBA8 texture of 0.5 m + 0.5 (rows bottom-up as stored).
   GLuint get(const std::shared_ptr<const NormalMap>& map);
   void prune();
 

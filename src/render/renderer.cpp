@@ -196,9 +196,15 @@ void Renderer::Impl::drawMeshes(const RenderScene& scene, const Camera& camera,
   mesh.set("u_shadow_map", 1);
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_2D, shadow_depth ? shadow_depth->id() : 0);
-  // Per-item material and pose.
-  for (const RenderItem& item : scene.items) {
-    if (!item.mesh) continue;
+  // Per-item material and pose; bodies before the ground so that depth testing rejects the
+  // ground's fragments behind them before they are shaded.
+  std::vector<const RenderItem*> order;
+  for (const RenderItem& item : scene.items)
+    if (item.mesh && !item.ground) order.push_back(&item);
+  for (const RenderItem& item : scene.items)
+    if (item.mesh && item.ground) order.push_back(&item);
+  for (const RenderItem* pointer : order) {
+    const RenderItem& item = *pointer;
     const GpuMesh& gpu = meshes.get(item.mesh);
     const bool mapped = o.normal_maps && item.normal_map && !item.normal_map->empty();
     glActiveTexture(GL_TEXTURE0);
@@ -256,11 +262,13 @@ void Renderer::render(const RenderScene& scene, const Camera& camera) {
   // Shadows from the light.
   const Mat4f light_vp = r.lightViewProj(focusBounds(scene), options_.light_direction);
   if (r.shadow_size > 0) r.drawShadows(scene, light_vp);
-  // Background gradient, then the lit scene, into the MSAA target.
+  // The lit scene, then the background gradient, into the MSAA target.
   glBindFramebuffer(GL_FRAMEBUFFER, *r.msaa_fbo);
   glViewport(0, 0, r.width, r.height);
   glEnable(GL_MULTISAMPLE);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  r.drawMeshes(scene, camera, options_, light_vp);
+  // The gradient sits on the far plane: drawn after the meshes, it only shades empty pixels.
   glDepthMask(GL_FALSE);
   r.background.use();
   r.background.set("u_top", kSkyTop);
@@ -268,7 +276,6 @@ void Renderer::render(const RenderScene& scene, const Camera& camera) {
   glBindVertexArray(r.empty_vao);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glDepthMask(GL_TRUE);
-  r.drawMeshes(scene, camera, options_, light_vp);
   // Debug layers over the shaded frame.
   r.debug.draw(scene.debug, camera.projection(double(r.width) / r.height) * camera.view(),
                options_.debug_on_top);

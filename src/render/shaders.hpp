@@ -88,7 +88,7 @@ void main() {
   if (u_has_normal_map != 0) {
     vec3 T = normalize(v_tangent);
     vec3 B = normalize(v_bitangent);
-    vec3 m = texture(u_normal_map, v_uv).xyz;
+    vec3 m = texture(u_normal_map, v_uv).xyz * 2.0 - 1.0;  // stored as 0.5 m + 0.5
     n = normalize(m.x * T + m.y * B + m.z * N);
   }
   vec3 L = normalize(u_light_dir);
