@@ -12,7 +12,10 @@ int main(int argc, char** argv) {
   app.add_option("--sampler", options.sampler, "Friction sampler replacing the scene's");
   app.add_option("--width", options.width, "Window width")->check(CLI::Range(64, 8192));
   app.add_option("--height", options.height, "Window height")->check(CLI::Range(64, 8192));
-  app.add_option("--samples", options.samples, "MSAA samples")->check(CLI::Range(1, 16));
+  app.add_option("--samples", options.samples, "MSAA samples (default: 4 on a GPU, 1 on llvmpipe)")
+      ->check(CLI::Range(1, 16));
+  app.add_option("--shadow-map", options.shadow_map, "Shadow map size (0 = no shadows)")
+      ->check(CLI::Range(0, 8192));
   app.add_option("--frames", options.frames, "Quit after N frames (prints the frame rate)")
       ->check(CLI::Range(1, 1000000));
   app.add_option("--screenshot", options.screenshot, "With --frames: PNG of the last frame");

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "asperity/error.hpp"
 #include "asperity/gl/context.hpp"
@@ -56,7 +57,13 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options), playing_(optio
   render::RendererOptions ro;
   ro.width = options.width;
   ro.height = options.height;
-  ro.samples = options.samples;
+  // Software rasterisers (llvmpipe) pay for every sample on the CPU: no MSAA unless asked.
+  const char* gl_renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const bool software =
+      gl_renderer != nullptr && (std::strstr(gl_renderer, "llvmpipe") != nullptr ||
+                                 std::strstr(gl_renderer, "softpipe") != nullptr);
+  ro.samples = options.samples > 0 ? options.samples : (software ? 1 : 4);
+  ro.shadow_map_size = options.shadow_map;
   renderer_ = std::make_unique<render::Renderer>(ro);
   // The "gl" patch sampler draws with the window's context (it restores the state it changes).
   registerFrictionProvider("gl", [] {

@@ -23,7 +23,8 @@ struct ViewerOptions {
   std::string sampler;  // replaces the scene's friction sampler when set
   int width = 1280;
   int height = 720;
-  int samples = 4;         // MSAA
+  int samples = 0;         // MSAA; 0 = automatic: 4 on a GPU, 1 on a software rasteriser
+  int shadow_map = 1024;   // shadow map texels per side (0 = no shadows)
   int frames = 0;          // > 0: quit after this many frames (tests, measurements)
   std::string screenshot;  // with frames: PNG of the last frame
   bool play = true;        // start playing
