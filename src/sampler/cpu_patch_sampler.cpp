@@ -42,7 +42,6 @@ struct CpuPatchSampler::State {
   patch::GeometryScratch geometry;
   std::array<patch::SurfaceRaster, 2> raster;  // A, B
   std::vector<uint32_t> in_patch;              // P as Volume::pack(i, j)
-  patch::ShadeScratch shade;
   std::vector<float> gx, gy;
   std::vector<Vec2> directions;
   std::array<std::array<double, kMaxDirections>, 2> sums{};
@@ -141,8 +140,8 @@ void CpuPatchSampler::State::sample(std::span<const Body> bodies, Contact& conta
   const size_t count = in_patch.size();
   const size_t n = directions.size();
   for (size_t s = 0; s < 2 && count > 0; ++s) {
-    patch::shadePloughing(volume, raster[s], in_patch, settings.mu_max, shade,
-                          gx.data() + s * count, gy.data() + s * count);
+    patch::shadePloughing(volume, raster[s], in_patch, settings.mu_max, gx.data() + s * count,
+                          gy.data() + s * count);
   }
   const Clock::time_point t1 = Clock::now();
   // Eq. 8 sums through the friction module's kernel.

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 #include <array>
-#include <vector>
+#include <cmath>
 
 #include "asperity/friction/fragment_model.hpp"
 #include "asperity/geometry/shape_mesh.hpp"
@@ -84,50 +84,131 @@ int log2i(int v) {
   return l;
 }
 
-// Meso normals of fragments [k0, k1) of one batchable primitive: texel indices and weights for
-// a chunk in straight-line (vectorisable) code, then the bilinear fetch and the frame.
-void shadeRun(const Volume& volume, const Planar& p, std::span<const uint32_t> pixels, size_t k0,
-              size_t k1, Vec3f* normals) {
-  const NormalMap& map = *p.material.map;
-  const int w = map.width(), h = map.height(), lw = log2i(w);
-  const float fw = static_cast<float>(w), fh = static_cast<float>(h);
-  const auto base = static_cast<float>(-0.5 * volume.width + 0.5 * volume.pixel);
-  const auto step = static_cast<float>(volume.pixel);
-  const float* tex = map.at(0, 0).data();
-  constexpr size_t kChunk = 64;
+// Fragments shaded together: small enough for the stack, large enough to amortise the setup.
+constexpr size_t kChunk = 64;
+
+// Per-fragment texel offsets (floats into the map) and bilinear weights of one chunk.
+struct ChunkTexels {
   alignas(16) float wu[kChunk], wv[kChunk];
   alignas(16) int o00[kChunk], o01[kChunk], o10[kChunk], o11[kChunk];
+};
+
+// The meso normals of one chunk in the contact frame, as separate components.
+struct ChunkNormals {
+  alignas(16) float x[kChunk], y[kChunk], z[kChunk];
+};
+
+// What a run of one batchable primitive needs, set up once per run.
+struct RunSetup {
+  const float* tex = nullptr;
+  int w = 0, h = 0, lw = 0;
+  float fw = 0.0f, fh = 0.0f;
+  float base = 0.0f, step = 0.0f;  // pixel centre coordinate = base + step * index
+};
+
+RunSetup setupRun(const Volume& volume, const Planar& p) {
+  const NormalMap& map = *p.material.map;
+  RunSetup s;
+  s.tex = map.at(0, 0).data();
+  s.w = map.width(), s.h = map.height(), s.lw = log2i(s.w);
+  s.fw = static_cast<float>(s.w), s.fh = static_cast<float>(s.h);
+  s.base = static_cast<float>(-0.5 * volume.width + 0.5 * volume.pixel);
+  s.step = static_cast<float>(volume.pixel);
+  return s;
+}
+
+// uv at each pixel centre (affine over the primitive), the bracketing texels (repeat, power-of-
+// two sizes) and the weights: straight-line code the compiler vectorises.
+void chunkTexels(const RunSetup& s, const Planar& p, const uint32_t* pixels, size_t n,
+                 ChunkTexels& t) {
+  for (size_t c = 0; c < n; ++c) {
+    // Through int: an unsigned conversion branches on baseline x86-64.
+    const auto i = static_cast<int>(pixels[c] & 0xffffu), j = static_cast<int>(pixels[c] >> 16);
+    const float x = s.base + s.step * static_cast<float>(i);
+    const float y = s.base + s.step * static_cast<float>(j);
+    const float xu = (p.uf[0] + p.uf[1] * x + p.uf[2] * y) * s.fw - 0.5f;
+    const float xv = (p.vf[0] + p.vf[1] * x + p.vf[2] * y) * s.fh - 0.5f;
+    const int bu = floorInt(xu), bv = floorInt(xv);
+    t.wu[c] = xu - static_cast<float>(bu);
+    t.wv[c] = xv - static_cast<float>(bv);
+    const int iu = bu & (s.w - 1), iv = bv & (s.h - 1);
+    const int iu1 = (iu + 1) & (s.w - 1), iv1 = (iv + 1) & (s.h - 1);
+    t.o00[c] = 3 * ((iv << s.lw) + iu);
+    t.o01[c] = 3 * ((iv << s.lw) + iu1);
+    t.o10[c] = 3 * ((iv1 << s.lw) + iu);
+    t.o11[c] = 3 * ((iv1 << s.lw) + iu1);
+  }
+}
+
+// Bilinear blend (unnormalised, as sampleNormal) through the primitive's constant frame.
+void chunkNormals(const float* tex, const Eigen::Matrix3f& f, const ChunkTexels& t, size_t n,
+                  ChunkNormals& m) {
+  for (size_t c = 0; c < n; ++c) {
+    float b[3];
+    for (int k = 0; k < 3; ++k) {
+      const float bottom = tex[t.o00[c] + k] + t.wu[c] * (tex[t.o01[c] + k] - tex[t.o00[c] + k]);
+      const float top = tex[t.o10[c] + k] + t.wu[c] * (tex[t.o11[c] + k] - tex[t.o10[c] + k]);
+      b[k] = bottom + t.wv[c] * (top - bottom);
+    }
+    m.x[c] = f(0, 0) * b[0] + f(0, 1) * b[1] + f(0, 2) * b[2];
+    m.y[c] = f(1, 0) * b[0] + f(1, 1) * b[1] + f(1, 2) * b[2];
+    m.z[c] = f(2, 0) * b[0] + f(2, 1) * b[1] + f(2, 2) * b[2];
+  }
+}
+
+constexpr float kTwoOverPi = static_cast<float>(2.0 / kPi);
+
+// Whether ploughingVector takes its unclamped branch ((2/pi) |m_tb| <= mu_max c, c > 0),
+// compared in squares so that no sqrt (a libm call for errno) blocks vectorisation; the two
+// branches agree where the comparison is within rounding of equality.
+inline bool unclamped(float x, float y, float height, float mu_max) {
+  const float slope = kTwoOverPi * kTwoOverPi * (x * x + y * y);
+  const float limit = (mu_max * height) * (mu_max * height);
+  return (height > 0.0f) & (slope <= limit);
+}
+
+// The unclamped branch of ploughingVector (g = (2/pi) m_tb / c, the same float operations) for
+// every fragment, branch-free so it vectorises; returns how many need the clamped branch
+// (chunkClamped overwrites those).
+int chunkPloughing(const ChunkNormals& m, size_t n, float sign, float mu_max, float* gx,
+                   float* gy) {
+  int clamped = 0;
+  for (size_t c = 0; c < n; ++c) {
+    const float height = sign * m.z[c];
+    const float ratio = sign * kTwoOverPi / height;
+    gx[c] = ratio * m.x[c];
+    gy[c] = ratio * m.y[c];
+    clamped += unclamped(m.x[c], m.y[c], height, mu_max) ? 0 : 1;
+  }
+  return clamped;
+}
+
+// The fragments chunkPloughing left out (steep or facing away) through the friction module,
+// which decides the branch itself.
+void chunkClamped(const ChunkNormals& m, size_t n, Side side, float mu_max, float* gx, float* gy) {
+  const float sign = side == Side::B ? 1.0f : -1.0f;
+  for (size_t c = 0; c < n; ++c) {
+    if (unclamped(m.x[c], m.y[c], sign * m.z[c], mu_max)) continue;
+    const Vec2f g = ploughingVector(Vec3f(m.x[c], m.y[c], m.z[c]), side, mu_max);
+    gx[c] = g.x();
+    gy[c] = g.y();
+  }
+}
+
+// Ploughing vectors of fragments [k0, k1) of one batchable primitive (unit gain), by chunks:
+// texel indices, normals, then g; no per-fragment call and no normalisation.
+void shadeRun(const Volume& volume, const Planar& p, Side side, float mu_max,
+              std::span<const uint32_t> pixels, size_t k0, size_t k1, float* gx, float* gy) {
+  const RunSetup setup = setupRun(volume, p);
+  const float sign = side == Side::B ? 1.0f : -1.0f;
+  ChunkTexels texels;
+  ChunkNormals normals;
   for (size_t c0 = k0; c0 < k1; c0 += kChunk) {
     const size_t n = std::min(kChunk, k1 - c0);
-    // uv at the pixel centre, the bracketing texels (repeat) and the weights.
-    for (size_t c = 0; c < n; ++c) {
-      const uint32_t packed = pixels[c0 + c];
-      const float x = base + step * static_cast<float>(packed & 0xffffu);
-      const float y = base + step * static_cast<float>(packed >> 16);
-      const float xu = (p.uf[0] + p.uf[1] * x + p.uf[2] * y) * fw - 0.5f;
-      const float xv = (p.vf[0] + p.vf[1] * x + p.vf[2] * y) * fh - 0.5f;
-      const float bu = floorFast(xu), bv = floorFast(xv);
-      wu[c] = xu - bu;
-      wv[c] = xv - bv;
-      const int iu = static_cast<int>(bu) & (w - 1), iv = static_cast<int>(bv) & (h - 1);
-      const int iu1 = (iu + 1) & (w - 1), iv1 = (iv + 1) & (h - 1);
-      o00[c] = 3 * ((iv << lw) + iu);
-      o01[c] = 3 * ((iv << lw) + iu1);
-      o10[c] = 3 * ((iv1 << lw) + iu);
-      o11[c] = 3 * ((iv1 << lw) + iu1);
-    }
-    // Bilinear blend (unnormalised) through the constant frame.
-    const Eigen::Matrix3f& f = p.frame;
-    for (size_t c = 0; c < n; ++c) {
-      float m[3];
-      for (int k = 0; k < 3; ++k) {
-        const float bottom = tex[o00[c] + k] + wu[c] * (tex[o01[c] + k] - tex[o00[c] + k]);
-        const float top = tex[o10[c] + k] + wu[c] * (tex[o11[c] + k] - tex[o10[c] + k]);
-        m[k] = bottom + wv[c] * (top - bottom);
-      }
-      normals[c0 + c] = Vec3f(f(0, 0) * m[0] + f(0, 1) * m[1] + f(0, 2) * m[2],
-                              f(1, 0) * m[0] + f(1, 1) * m[1] + f(1, 2) * m[2],
-                              f(2, 0) * m[0] + f(2, 1) * m[1] + f(2, 2) * m[2]);
+    chunkTexels(setup, p, pixels.data() + c0, n, texels);
+    chunkNormals(setup.tex, p.frame, texels, n, normals);
+    if (chunkPloughing(normals, n, sign, mu_max, gx + c0, gy + c0) > 0) {
+      chunkClamped(normals, n, side, mu_max, gx + c0, gy + c0);
     }
   }
 }
@@ -135,44 +216,31 @@ void shadeRun(const Volume& volume, const Planar& p, std::span<const uint32_t> p
 }  // namespace
 
 void shadePloughing(const Volume& volume, const SurfaceRaster& raster,
-                    std::span<const uint32_t> pixels, float mu_max, ShadeScratch& scratch,
-                    float* gx, float* gy) {
+                    std::span<const uint32_t> pixels, float mu_max, float* gx, float* gy) {
   const int r = volume.resolution;
   auto primitiveAt = [&](size_t k) {
     const uint32_t packed = pixels[k];
     return raster.primitive[(packed >> 16) * static_cast<uint32_t>(r) + (packed & 0xffffu)];
   };
-  std::vector<Vec3f>& normals = scratch.normals;
-  std::vector<float>& gains = scratch.gains;
-  if (normals.size() < pixels.size()) {
-    normals.resize(pixels.size());
-    gains.resize(pixels.size());
-  }
-  // Pass 1: meso normals; runs of one batchable primitive in bulk, the rest one by one.
-  bool all_unit_gain = true;
+  // Runs of one batchable primitive in bulk, the rest one by one.
   for (size_t k = 0; k < pixels.size();) {
     const int32_t id = primitiveAt(k);
     if (batchable(raster, id)) {
       size_t end = k + 1;
       while (end < pixels.size() && primitiveAt(end) == id) ++end;
-      shadeRun(volume, raster.planars[static_cast<size_t>(id)], pixels, k, end, normals.data());
-      std::fill(gains.begin() + static_cast<long>(k), gains.begin() + static_cast<long>(end), 1.0f);
+      shadeRun(volume, raster.planars[static_cast<size_t>(id)], raster.side, mu_max, pixels, k, end,
+               gx, gy);
       k = end;
       continue;
     }
+    // Eqs. 3 to 6 through the friction module, scaled by the mask
+    // (max(0, s g.d) = s max(0, g.d) for s >= 0).
     const int i = static_cast<int>(pixels[k] & 0xffffu), j = static_cast<int>(pixels[k] >> 16);
     const Fragment f = shadeFragment(volume, raster, j * r + i);
-    normals[k] = f.m;
-    gains[k] = f.gain;
-    all_unit_gain = all_unit_gain && f.gain == 1.0f;
+    const Vec2f g = ploughingVector(f.m, raster.side, mu_max);
+    gx[k] = f.gain * g.x();
+    gy[k] = f.gain * g.y();
     ++k;
-  }
-  // Pass 2: Eqs. 3 to 6 through the friction module, scaled by the mask
-  // (max(0, s g.d) = s max(0, g.d) for s >= 0).
-  for (size_t k = 0; k < pixels.size(); ++k) {
-    const Vec2f g = ploughingVector(normals[k], raster.side, mu_max);
-    gx[k] = all_unit_gain ? g.x() : gains[k] * g.x();
-    gy[k] = all_unit_gain ? g.y() : gains[k] * g.y();
   }
 }
 

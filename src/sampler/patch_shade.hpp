@@ -5,7 +5,6 @@
 
 #include <cstdint>
 #include <span>
-#include <vector>
 
 #include "sampler/patch_raster.hpp"
 
@@ -19,16 +18,10 @@ struct Fragment {
 // The fragment kept at `pixel` of `raster` (which must be covered).
 Fragment shadeFragment(const Volume& volume, const SurfaceRaster& raster, int pixel);
 
-// Buffers of shadePloughing, kept by the caller between contacts.
-struct ShadeScratch {
-  std::vector<Vec3f> normals;
-  std::vector<float> gains;
-};
-
 // g = gain * ploughingVector(m) for each listed (covered) pixel (Volume::pack(i, j)), into
-// gx[k], gy[k].
+// gx[k], gy[k]. Flat-framed planar primitives with a power-of-two map and no mask (box faces,
+// planes) are shaded in bulk with the same float operations; nothing is allocated.
 void shadePloughing(const Volume& volume, const SurfaceRaster& raster,
-                    std::span<const uint32_t> pixels, float mu_max, ShadeScratch& scratch,
-                    float* gx, float* gy);
+                    std::span<const uint32_t> pixels, float mu_max, float* gx, float* gy);
 
 }  // namespace asperity::patch

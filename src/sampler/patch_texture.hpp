@@ -17,10 +17,15 @@ struct TexelBracket {
   float weight = 0.0f;
 };
 
-// floor() without a libm call (baseline x86-64 has no rounding instruction); |x| < 2^31.
+// floor() as an int without a libm call (baseline x86-64 has no rounding instruction), for
+// |x| < 2^24; the correction is done on ints, so that loops using it stay branch-free.
+inline int floorInt(float x) {
+  const int t = static_cast<int>(x);
+  return t - (static_cast<float>(t) > x ? 1 : 0);
+}
+
 inline float floorFast(float x) {
-  const auto i = static_cast<float>(static_cast<int>(x));
-  return i > x ? i - 1.0f : i;
+  return static_cast<float>(floorInt(x));
 }
 
 // Wraps a texel index into [0, size) (a mask for powers of two).
