@@ -2,6 +2,7 @@
 #include "asperity/collision/signed_distance_field.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <string>
@@ -73,11 +74,32 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
   return a + ab * (vb * denom) + ac * (vc * denom);
 }
 
+std::vector<std::array<int, 3>> weldedTriangles(const TriangleMeshData& mesh) {
+  // One index per distinct position (exact equality): loaders split vertices at UV seams.
+  std::map<std::array<double, 3>, int> first;
+  std::vector<int> weld(mesh.vertices.size());
+  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+    const Vec3& p = mesh.vertices[v];
+    weld[v] = first.try_emplace({p.x(), p.y(), p.z()}, static_cast<int>(v)).first->second;
+  }
+  std::vector<std::array<int, 3>> out;
+  out.reserve(mesh.triangles.size());
+  for (const auto& tri : mesh.triangles) {
+    std::array<int, 3> w{};
+    for (size_t c = 0; c < 3; ++c) {
+      const int v = tri[c];
+      w[c] = v >= 0 && static_cast<size_t>(v) < weld.size() ? weld[static_cast<size_t>(v)] : v;
+    }
+    out.push_back(w);
+  }
+  return out;
+}
+
 bool isClosedMesh(const TriangleMeshData& mesh) {
-  // Count each undirected edge; a closed 2-manifold uses every edge exactly twice.
+  // Count each undirected edge of the welded mesh; a closed 2-manifold uses every edge twice.
   if (mesh.triangles.empty()) return false;
   std::map<std::pair<int, int>, int> edges;
-  for (const auto& tri : mesh.triangles) {
+  for (const auto& tri : weldedTriangles(mesh)) {
     for (int e = 0; e < 3; ++e) {
       const int u = tri[static_cast<size_t>(e)], v = tri[static_cast<size_t>((e + 1) % 3)];
       ++edges[{std::min(u, v), std::max(u, v)}];

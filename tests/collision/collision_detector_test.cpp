@@ -452,6 +452,25 @@ TEST(CollisionDetector, NutOnBoltUsesSignedDistance) {
   EXPECT_GE(face_contacts, 4);
 }
 
+TEST(CollisionDetector, NutWithUvSeamsOnBoltUsesSignedDistance) {
+  // The nut with every triangle's vertices split (per-face UVs) is still closed: centred it
+  // clears the bolt (its hull would not), shifted it touches exactly as the unsplit nut.
+  auto split = nutOnBolt(0.0);
+  split[1].shapes[0].mesh = splitAtFaces(*split[1].shapes[0].mesh);
+  EXPECT_TRUE(detectOnce(split).empty());
+  split[1].pose.position.x() = 0.00025;
+  const auto whole = detectOnce(nutOnBolt(0.00025));
+  const auto contacts = detectOnce(split);
+  ASSERT_FALSE(contacts.empty());
+  ASSERT_EQ(contacts.size(), whole.size());
+  for (size_t i = 0; i < contacts.size(); ++i) {
+    EXPECT_TRUE(near(contacts[i].phi, whole[i].phi, 0, 1e-12));
+    EXPECT_TRUE((contacts[i].normal - whole[i].normal).norm() < 1e-12);
+    EXPECT_TRUE((contacts[i].witness_a - whole[i].witness_a).norm() < 1e-12);
+    EXPECT_EQ(contacts[i].feature_a, whole[i].feature_a);
+  }
+}
+
 TEST(CollisionDetector, NutOnCylinderBolt) {
   // A static cylinder bolt (r 1.8 mm) through the dynamic nut's square bore.
   Shape rod;

@@ -127,4 +127,20 @@ inline std::shared_ptr<TriangleMeshData> squareNutMesh(double outer, double inne
   return mesh;
 }
 
+// The same surface with every triangle's corners split off and given their own UVs, as a
+// loader splits vertices per (position, uv) pair: no two triangles share a vertex index.
+inline std::shared_ptr<TriangleMeshData> splitAtFaces(const TriangleMeshData& mesh) {
+  auto out = std::make_shared<TriangleMeshData>();
+  const Vec2 corner_uv[3] = {Vec2(0, 0), Vec2(1, 0), Vec2(0, 1)};
+  for (const auto& tri : mesh.triangles) {
+    const int first = static_cast<int>(out->vertices.size());
+    for (size_t c = 0; c < 3; ++c) {
+      out->vertices.push_back(mesh.vertices[static_cast<size_t>(tri[c])]);
+      out->uvs.push_back(corner_uv[c]);
+    }
+    out->triangles.push_back({first, first + 1, first + 2});
+  }
+  return out;
+}
+
 }  // namespace asperity::collision_test

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <set>
 
 #include "asperity/error.hpp"
 #include "collision_test_scenes.hpp"
@@ -81,6 +82,35 @@ TEST(SignedDistanceField, ClosednessAndBadInput) {
   EXPECT_FALSE(isClosedMesh(TriangleMeshData{}));
   EXPECT_THROW(SignedDistanceField::build(TriangleMeshData{}, 32), Error);
   EXPECT_THROW(SignedDistanceField::build(*collision_test::boxMesh(Vec3::Constant(1)), 3), Error);
+}
+
+TEST(SignedDistanceField, VerticesSplitAtUvSeamsAreWeldedForTopology) {
+  // Every triangle with its own corners: closed by welded positions, open with one removed.
+  const auto nut = collision_test::squareNutMesh(0.0035, 0.002, 0.0016);
+  const auto split_nut = collision_test::splitAtFaces(*nut);
+  const auto split_box = collision_test::splitAtFaces(*collision_test::boxMesh(Vec3(1, 2, 3)));
+  EXPECT_TRUE(isClosedMesh(*split_nut));
+  EXPECT_TRUE(isClosedMesh(*split_box));
+  TriangleMeshData holed = *split_box;
+  holed.triangles.pop_back();
+  EXPECT_FALSE(isClosedMesh(holed));
+  // Welding maps each split corner back to one index per position (16 corners of the nut).
+  std::set<int> used;
+  for (const auto& tri : weldedTriangles(*split_nut)) used.insert(tri.begin(), tri.end());
+  EXPECT_EQ(used.size(), nut->vertices.size());
+  // The field, signs included, is the unsplit mesh's node for node.
+  const auto whole = SignedDistanceField::build(*nut, 48);
+  const auto split = SignedDistanceField::build(*split_nut, 48);
+  ASSERT_EQ(whole->nodes(0), split->nodes(0));
+  for (int k = 0; k < whole->nodes(2); ++k) {
+    for (int j = 0; j < whole->nodes(1); ++j) {
+      for (int i = 0; i < whole->nodes(0); ++i) {
+        ASSERT_EQ(whole->nodeValue(i, j, k), split->nodeValue(i, j, k)) << i << " " << j;
+      }
+    }
+  }
+  EXPECT_LT(split->sample(Vec3(0.0025, 0, 0)).distance, 0);  // in the wall
+  EXPECT_GT(split->sample(Vec3(0.0015, 0, 0)).distance, 0);  // in the bore
 }
 
 TEST(SignedDistanceField, ClosestPointOnTriangleRegions) {

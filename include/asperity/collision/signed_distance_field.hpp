@@ -7,6 +7,7 @@
 // the parity of ray crossings along +x. Values are trilinearly interpolated between nodes.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -15,7 +16,12 @@
 
 namespace asperity {
 
-// True when every edge is shared by exactly two triangles (the mesh bounds a volume).
+// The triangles re-indexed so that vertices at exactly equal positions share one index (the
+// first of them): the topology of a mesh whose vertices are split at UV or normal seams.
+std::vector<std::array<int, 3>> weldedTriangles(const TriangleMeshData& mesh);
+
+// True when every edge of the welded mesh (weldedTriangles) is shared by exactly two
+// triangles: the mesh bounds a volume, UV seams or not.
 bool isClosedMesh(const TriangleMeshData& mesh);
 
 class SignedDistanceField {
