@@ -173,13 +173,51 @@ void clipSpan(const Volume& volume, double a, double lo_value, double hi_value, 
   hi = std::min(hi, static_cast<int>(last));
 }
 
+// Where an edge crosses row j, as a pixel index affine in j: t(j) = t0 + dt j. Inside is
+// i > t for a lower bound, i < t for an upper one; rows of an edge parallel to x are either
+// all in or all out (`row_in`, decided per row). Set up once per primitive: a row then costs
+// a multiply-add instead of two divisions.
+struct EdgeBound {
+  double t0 = 0.0, dt = 0.0;
+  bool lower = true, horizontal = false;
+};
+
+EdgeBound edgeBound(const Volume& volume, const Edge& e) {
+  EdgeBound eb;
+  eb.horizontal = e.a == 0.0;
+  if (eb.horizontal) return eb;
+  // a x + b y + c = 0 at x = -(b y + c) / a, with x = x0 + i p and y = x0 + j p.
+  const double x0 = volume.centreX(0), p = volume.pixel;
+  eb.t0 = (-(e.b * x0 + e.c) / e.a - x0) / p;
+  eb.dt = -e.b / e.a;
+  eb.lower = e.a > 0.0;
+  return eb;
+}
+
+// Narrows [lo, hi] by one edge at row j. Pixels more than kSlack pixel widths outside the edge
+// are dropped (rounding here is far below that); the rest are left to the exact test.
+void clipEdge(const EdgeBound& eb, const Edge& e, double y, int j, int resolution, int& lo,
+              int& hi) {
+  constexpr double kSlack = 1e-3;
+  if (eb.horizontal) {
+    if (e.b * y + e.c < 0.0) hi = lo - 1;
+    return;
+  }
+  const double limit = resolution + 1.0;
+  const double t = eb.t0 + eb.dt * j;
+  if (eb.lower) {
+    lo = std::max(lo, static_cast<int>(std::clamp(std::ceil(t - kSlack), -1.0, limit)));
+  } else {
+    hi = std::min(hi, static_cast<int>(std::clamp(std::floor(t + kSlack), -1.0, limit)));
+  }
+}
+
 }  // namespace
 
 void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, SurfaceRaster& raster) {
   const int r = volume.resolution;
   const double h = volume.half_depth;
   const float sign = raster.side == Side::B ? 1.0f : -1.0f;
-  constexpr double kBig = std::numeric_limits<double>::max();
   const int i0 = std::max(prim.i0, raster.wi0), i1 = std::min(prim.i1, raster.wi1);
   const int j0 = std::max(prim.j0, raster.wj0), j1 = std::min(prim.j1, raster.wj1);
   // Small primitives (mesh triangles near pixel size): the exact test per pixel is cheaper.
@@ -198,13 +236,16 @@ void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, Surfa
     }
     return;
   }
+  std::array<EdgeBound, 4> bounds;
+  for (int k = 0; k < prim.edge_count; ++k) {
+    bounds[static_cast<size_t>(k)] = edgeBound(volume, prim.edges[static_cast<size_t>(k)]);
+  }
   for (int j = j0; j <= j1; ++j) {
     const double y = volume.centreX(j);
     // The row's span: every edge and the depth clip bound x from one side or both.
     int lo = i0, hi = i1;
     for (int k = 0; k < prim.edge_count && lo <= hi; ++k) {
-      const Edge& e = prim.edges[static_cast<size_t>(k)];
-      clipSpan(volume, e.a, -(e.b * y + e.c), kBig, lo, hi);
+      clipEdge(bounds[static_cast<size_t>(k)], prim.edges[static_cast<size_t>(k)], y, j, r, lo, hi);
     }
     const double zr = prim.z.c + prim.z.dy * y;
     if (lo <= hi) clipSpan(volume, prim.z.dx, -h - zr, h - zr, lo, hi);
