@@ -117,6 +117,13 @@ struct CollisionDetector::Impl {
   std::vector<std::pair<int, int>> plane_pairs;  // record pairs found by the broadphase
   std::vector<std::pair<int, int>> sdf_pairs;
   std::vector<Contact> contacts;
+  std::vector<Contact> unsorted;  // the previous step's buffer, reused
+  struct SortKey {
+    BodyId a, b;
+    uint64_t key;
+    uint32_t index;
+  };
+  std::vector<SortKey> order;
   uint64_t next_point_id = 1;
 
   ~Impl() { release(); }
@@ -181,6 +188,23 @@ struct CollisionDetector::Impl {
     auto& f = mesh_features[r.shape.mesh];
     if (!f) f = std::make_unique<MeshFeatures>(r.shape.mesh);
     return f.get();
+  }
+
+  // Deterministic order (SPEC: same input, same contacts): by (body_a, body_b, key), ties in
+  // the order found. Small keys are sorted and each contact moved once: sorting the contacts
+  // themselves (several hundred bytes each) cost more per contact as the pile grew.
+  void sortContacts() {
+    order.resize(contacts.size());
+    for (size_t i = 0; i < contacts.size(); ++i) {
+      const Contact& c = contacts[i];
+      order[i] = SortKey{c.body_a, c.body_b, c.key, static_cast<uint32_t>(i)};
+    }
+    std::sort(order.begin(), order.end(), [](const SortKey& x, const SortKey& y) {
+      return std::tie(x.a, x.b, x.key, x.index) < std::tie(y.a, y.b, y.key, y.index);
+    });
+    unsorted.swap(contacts);
+    contacts.resize(unsorted.size());
+    for (size_t i = 0; i < order.size(); ++i) contacts[i] = unsorted[order[i].index];
   }
 
   void build(std::span<const Body> bodies);
@@ -390,10 +414,7 @@ const std::vector<Contact>& CollisionDetector::detect(std::span<const Body> bodi
     sdfPairContacts(s.records[static_cast<size_t>(r0)], s.records[static_cast<size_t>(r1)],
                     s.settings, s.sdf, s.contacts);
   }
-  // Deterministic order (SPEC: same input, same contacts).
-  std::sort(s.contacts.begin(), s.contacts.end(), [](const Contact& a, const Contact& b) {
-    return std::tie(a.body_a, a.body_b, a.key) < std::tie(b.body_a, b.body_b, b.key);
-  });
+  s.sortContacts();
   return s.contacts;
 }
 
