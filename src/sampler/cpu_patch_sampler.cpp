@@ -18,16 +18,18 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Narrows b's window to the union of a's primitive bounds (empty when a has none).
-void narrowToFootprint(const patch::SurfaceRaster& a, patch::SurfaceRaster& b) {
-  int i0 = b.wi1 + 1, i1 = -1, j0 = b.wj1 + 1, j1 = -1;
-  auto grow = [&](int pi0, int pi1, int pj0, int pj1) {
-    i0 = std::min(i0, pi0), i1 = std::max(i1, pi1), j0 = std::min(j0, pj0), j1 = std::max(j1, pj1);
-  };
-  for (const patch::Planar& p : a.planars) grow(p.i0, p.i1, p.j0, p.j1);
-  for (const patch::Curved& c : a.curveds) grow(c.i0, c.i1, c.j0, c.j1);
-  b.wi0 = std::max(b.wi0, i0), b.wi1 = std::min(b.wi1, i1);
-  b.wj0 = std::max(b.wj0, j0), b.wj1 = std::min(b.wj1, j1);
+// Narrows b's window to the rows and row spans where a has coverage (empty when a has none):
+// only P counts.
+void narrowToCoverage(const patch::SurfaceRaster& a, patch::SurfaceRaster& b) {
+  const int rows = static_cast<int>(a.cov_lo.size());
+  b.wj0 = rows, b.wj1 = -1;
+  for (int j = 0; j < rows; ++j) {
+    const auto row = static_cast<size_t>(j);
+    b.win_lo[row] = std::max(b.win_lo[row], a.cov_lo[row]);
+    b.win_hi[row] = std::min(b.win_hi[row], a.cov_hi[row]);
+    if (b.win_lo[row] > b.win_hi[row]) continue;
+    b.wj0 = std::min(b.wj0, j), b.wj1 = std::max(b.wj1, j);
+  }
 }
 
 double msBetween(Clock::time_point a, Clock::time_point b) {
@@ -70,14 +72,14 @@ void CpuPatchSampler::State::prepare(const FrictionSettings& settings) {
 
 void CpuPatchSampler::State::rasterise(const patch::Volume& volume,
                                        const patch::ShapeRange (&ranges)[2], bool whole) {
-  // A first; unless both whole images are wanted, B only where A may have fragments (the
-  // union of A's primitive bounds), since only P counts.
+  // A first; unless both whole images are wanted, B only where A has fragments (A's coverage
+  // spans per row), since only P counts.
   for (int s = 0; s < 2; ++s) {
     patch::SurfaceRaster& r = raster[static_cast<size_t>(s)];
     r.reset(s == 0 ? Side::A : Side::B, volume.resolution);
-    if (s == 1 && !whole) narrowToFootprint(raster[0], r);
+    if (s == 1 && !whole) narrowToCoverage(raster[0], r);
     const patch::ShapeRange& range = ranges[s];
-    for (int k = range.first; k < range.last && r.wi0 <= r.wi1 && r.wj0 <= r.wj1; ++k) {
+    for (int k = range.first; k < range.last && r.wj0 <= r.wj1; ++k) {
       patch::rasteriseShape(volume, range.body->shapes[static_cast<size_t>(k)],
                             patch::shapePose(*range.body, k), meshes, geometry, r);
     }
@@ -89,7 +91,8 @@ void CpuPatchSampler::State::rasterise(const patch::Volume& volume,
   const float* key_a = raster[0].key.data();
   const float* key_b = b.key.data();
   for (int j = b.wj0; j <= b.wj1; ++j) {
-    for (int i = b.wi0; i <= b.wi1; ++i) {
+    const int lo = b.win_lo[static_cast<size_t>(j)], hi = b.win_hi[static_cast<size_t>(j)];
+    for (int i = lo; i <= hi; ++i) {
       const int p = j * volume.resolution + i;
       in_patch[count] = patch::Volume::pack(i, j);
       count += static_cast<size_t>(key_a[p] > patch::SurfaceRaster::kEmpty) &

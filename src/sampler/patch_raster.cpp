@@ -85,8 +85,12 @@ void setFloatUv(Planar& prim) {
 void SurfaceRaster::reset(Side s, int resolution) {
   const int pixels = resolution * resolution;
   side = s;
-  wi0 = wj0 = 0;
-  wi1 = wj1 = resolution - 1;
+  wj0 = 0;
+  wj1 = resolution - 1;
+  win_lo.assign(static_cast<size_t>(resolution), 0);
+  win_hi.assign(static_cast<size_t>(resolution), resolution - 1);
+  cov_lo.assign(static_cast<size_t>(resolution), resolution);
+  cov_hi.assign(static_cast<size_t>(resolution), -1);
   key.assign(static_cast<size_t>(pixels), kEmpty);
   primitive.resize(static_cast<size_t>(pixels));
   planars.clear();
@@ -218,14 +222,17 @@ void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, Surfa
   const int r = volume.resolution;
   const double h = volume.half_depth;
   const float sign = raster.side == Side::B ? 1.0f : -1.0f;
-  const int i0 = std::max(prim.i0, raster.wi0), i1 = std::min(prim.i1, raster.wi1);
   const int j0 = std::max(prim.j0, raster.wj0), j1 = std::min(prim.j1, raster.wj1);
+  // Row j's pixels: the primitive's bounds within the window.
+  auto rowLo = [&](int j) { return std::max(prim.i0, raster.win_lo[static_cast<size_t>(j)]); };
+  auto rowHi = [&](int j) { return std::min(prim.i1, raster.win_hi[static_cast<size_t>(j)]); };
   // Small primitives (mesh triangles near pixel size): the exact test per pixel is cheaper.
-  if ((i1 - i0 + 1) * (j1 - j0 + 1) <= 9) {
+  if ((prim.i1 - prim.i0 + 1) * (j1 - j0 + 1) <= 9) {
     for (int j = j0; j <= j1; ++j) {
-      for (int i = i0; i <= i1; ++i) {
+      for (int i = rowLo(j); i <= rowHi(j); ++i) {
         const double x = volume.centreX(i), y = volume.centreX(j);
         if (!insidePlanar(prim, h, x, y)) continue;
+        raster.cover(j, i, i);
         const size_t idx = static_cast<size_t>(j * r + i);
         const float k = sign * static_cast<float>(prim.z.at(x, y));
         if (k > raster.key[idx]) {
@@ -243,7 +250,7 @@ void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, Surfa
   for (int j = j0; j <= j1; ++j) {
     const double y = volume.centreX(j);
     // The row's span: every edge and the depth clip bound x from one side or both.
-    int lo = i0, hi = i1;
+    int lo = rowLo(j), hi = rowHi(j);
     for (int k = 0; k < prim.edge_count && lo <= hi; ++k) {
       clipEdge(bounds[static_cast<size_t>(k)], prim.edges[static_cast<size_t>(k)], y, j, r, lo, hi);
     }
@@ -252,6 +259,8 @@ void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, Surfa
     // Trim the conservative ends with the exact test.
     while (lo <= hi && !insidePlanar(prim, h, volume.centreX(lo), y)) ++lo;
     while (lo <= hi && !insidePlanar(prim, h, volume.centreX(hi), y)) --hi;
+    if (lo > hi) continue;
+    raster.cover(j, lo, hi);
     // Inside the span: keep the fragment nearest the other body.
     float* key = raster.key.data() + static_cast<size_t>(j * r);
     int32_t* primitive = raster.primitive.data() + static_cast<size_t>(j * r);
@@ -303,10 +312,11 @@ bool castCurved(const Curved& prim, Side side, double x, double y, double& z) {
 void rasteriseCurved(const Volume& volume, const Curved& prim, int32_t id, SurfaceRaster& raster) {
   const int r = volume.resolution;
   const float sign = raster.side == Side::B ? 1.0f : -1.0f;
-  const int i0 = std::max(prim.i0, raster.wi0), i1 = std::min(prim.i1, raster.wi1);
   const int j0 = std::max(prim.j0, raster.wj0), j1 = std::min(prim.j1, raster.wj1);
   for (int j = j0; j <= j1; ++j) {
     const double y = volume.centreX(j);
+    const int i0 = std::max(prim.i0, raster.win_lo[static_cast<size_t>(j)]);
+    const int i1 = std::min(prim.i1, raster.win_hi[static_cast<size_t>(j)]);
     for (int i = i0; i <= i1; ++i) {
       const double x = volume.centreX(i);
       double z = 0.0;
@@ -314,6 +324,7 @@ void rasteriseCurved(const Volume& volume, const Curved& prim, int32_t id, Surfa
       if (!castCurved(prim, raster.side, x, y, z) || !(std::abs(z) <= volume.half_depth)) {
         continue;
       }
+      raster.cover(j, i, i);
       const size_t idx = static_cast<size_t>(j * r + i);
       const float key = sign * static_cast<float>(z);
       if (key > raster.key[idx]) {

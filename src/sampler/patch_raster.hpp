@@ -9,6 +9,7 @@
 // test sees looking from the other body).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -93,12 +94,22 @@ struct SurfaceRaster {
       primitive;  // >= 0 planar index, < 0: curved index -1 - p; unused if key=-inf
   std::vector<Planar> planars;
   std::vector<Curved> curveds;
-  // Only pixels in this window are rasterised (all after reset): the sampler narrows it to the
-  // other surface's footprint when only P matters.
-  int wi0 = 0, wi1 = -1, wj0 = 0, wj1 = -1;
+  // Only pixels in this window are rasterised: rows wj0..wj1, in row j pixels win_lo[j] to
+  // win_hi[j] (all after reset). The sampler narrows B's to A's coverage when only P matters.
+  int wj0 = 0, wj1 = -1;
+  std::vector<int> win_lo, win_hi;
+  // Per row, the pixels where a fragment passed the coverage tests lie in cov_lo[j]..cov_hi[j]
+  // (empty when lo > hi).
+  std::vector<int> cov_lo, cov_hi;
 
   void reset(Side s, int resolution);
   bool covered(int pixel) const { return key[static_cast<size_t>(pixel)] > kEmpty; }
+  // Widens row j's coverage span to [lo, hi] (lo <= hi).
+  void cover(int j, int lo, int hi) {
+    const auto row = static_cast<size_t>(j);
+    cov_lo[row] = std::min(cov_lo[row], lo);
+    cov_hi[row] = std::max(cov_hi[row], hi);
+  }
   static constexpr float kEmpty = -3.0e38f;
 };
 
