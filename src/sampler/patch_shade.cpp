@@ -102,6 +102,7 @@ struct ChunkNormals {
 struct RunSetup {
   const float* tex = nullptr;
   int w = 0, h = 0, lw = 0;
+  int floats = 0;  // 3 w h
   float fw = 0.0f, fh = 0.0f;
   float base = 0.0f, step = 0.0f;  // pixel centre coordinate = base + step * index
 };
@@ -111,6 +112,7 @@ RunSetup setupRun(const Volume& volume, const Planar& p) {
   RunSetup s;
   s.tex = map.at(0, 0).data();
   s.w = map.width(), s.h = map.height(), s.lw = log2i(s.w);
+  s.floats = 3 * s.w * s.h;
   s.fw = static_cast<float>(s.w), s.fh = static_cast<float>(s.h);
   s.base = static_cast<float>(-0.5 * volume.width + 0.5 * volume.pixel);
   s.step = static_cast<float>(volume.pixel);
@@ -118,9 +120,11 @@ RunSetup setupRun(const Volume& volume, const Planar& p) {
 }
 
 // uv at each pixel centre (affine over the primitive), the bracketing texels (repeat, power-of-
-// two sizes) and the weights: straight-line code the compiler vectorises.
-void chunkTexels(const RunSetup& s, const Planar& p, const uint32_t* pixels, size_t n,
-                 ChunkTexels& t) {
+// two sizes) and the weights: straight-line code the compiler vectorises. Returns the largest
+// offset.
+int chunkTexels(const RunSetup& s, const Planar& p, const uint32_t* pixels, size_t n,
+                ChunkTexels& t) {
+  int top = 0;
   for (size_t c = 0; c < n; ++c) {
     // Through int: an unsigned conversion branches on baseline x86-64.
     const auto i = static_cast<int>(pixels[c] & 0xffffu), j = static_cast<int>(pixels[c] >> 16);
@@ -137,7 +141,9 @@ void chunkTexels(const RunSetup& s, const Planar& p, const uint32_t* pixels, siz
     t.o01[c] = 3 * ((iv << s.lw) + iu1);
     t.o10[c] = 3 * ((iv1 << s.lw) + iu);
     t.o11[c] = 3 * ((iv1 << s.lw) + iu1);
+    top = std::max(top, std::max(std::max(t.o00[c], t.o01[c]), std::max(t.o10[c], t.o11[c])));
   }
+  return top;
 }
 
 // Bilinear blend (unnormalised, as sampleNormal) through the primitive's constant frame.
@@ -153,6 +159,29 @@ void chunkNormals(const float* tex, const Eigen::Matrix3f& f, const ChunkTexels&
     m.x[c] = f(0, 0) * b[0] + f(0, 1) * b[1] + f(0, 2) * b[2];
     m.y[c] = f(1, 0) * b[0] + f(1, 1) * b[1] + f(1, 2) * b[2];
     m.z[c] = f(2, 0) * b[0] + f(2, 1) * b[1] + f(2, 2) * b[2];
+  }
+}
+
+// chunkNormals with each texel's three channels in one 4-float register: the same float
+// operations per channel. Reads one float past each texel, so the caller keeps it off the
+// map's last texel.
+void chunkNormals4(const float* tex, const Eigen::Matrix3f& f, const ChunkTexels& t, size_t n,
+                   ChunkNormals& m) {
+  using Texel = Eigen::Array4f;
+  auto load = [tex](int offset) { return Texel(Eigen::Map<const Texel>(tex + offset)); };
+  const Texel c0(f(0, 0), f(1, 0), f(2, 0), 0.0f);
+  const Texel c1(f(0, 1), f(1, 1), f(2, 1), 0.0f);
+  const Texel c2(f(0, 2), f(1, 2), f(2, 2), 0.0f);
+  for (size_t c = 0; c < n; ++c) {
+    const Texel t00 = load(t.o00[c]), t01 = load(t.o01[c]);
+    const Texel t10 = load(t.o10[c]), t11 = load(t.o11[c]);
+    const Texel bottom = t00 + t.wu[c] * (t01 - t00);
+    const Texel top = t10 + t.wu[c] * (t11 - t10);
+    const Texel b = bottom + t.wv[c] * (top - bottom);
+    const Texel frame = c0 * b[0] + c1 * b[1] + c2 * b[2];
+    m.x[c] = frame[0];
+    m.y[c] = frame[1];
+    m.z[c] = frame[2];
   }
 }
 
@@ -205,8 +234,12 @@ void shadeRun(const Volume& volume, const Planar& p, Side side, float mu_max,
   ChunkNormals normals;
   for (size_t c0 = k0; c0 < k1; c0 += kChunk) {
     const size_t n = std::min(kChunk, k1 - c0);
-    chunkTexels(setup, p, pixels.data() + c0, n, texels);
-    chunkNormals(setup.tex, p.frame, texels, n, normals);
+    // Four floats from each texel unless the last texel of the map is among them.
+    if (chunkTexels(setup, p, pixels.data() + c0, n, texels) + 4 <= setup.floats) {
+      chunkNormals4(setup.tex, p.frame, texels, n, normals);
+    } else {
+      chunkNormals(setup.tex, p.frame, texels, n, normals);
+    }
     if (chunkPloughing(normals, n, sign, mu_max, gx + c0, gy + c0) > 0) {
       chunkClamped(normals, n, side, mu_max, gx + c0, gy + c0);
     }
