@@ -255,6 +255,11 @@ void shadePloughing(const Volume& volume, const SurfaceRaster& raster,
     const uint32_t packed = pixels[k];
     return raster.primitive[(packed >> 16) * static_cast<uint32_t>(r) + (packed & 0xffffu)];
   };
+  // One primitive in the patch (a box face, a plane): every covered pixel is one run.
+  if (raster.planars.size() == 1 && raster.curveds.empty() && batchable(raster, 0)) {
+    shadeRun(volume, raster.planars[0], raster.side, mu_max, pixels, 0, pixels.size(), gx, gy);
+    return;
+  }
   // Runs of one batchable primitive in bulk, the rest one by one.
   for (size_t k = 0; k < pixels.size();) {
     const int32_t id = primitiveAt(k);
