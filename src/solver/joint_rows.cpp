@@ -137,14 +137,23 @@ void ContactSolver::storeJointImpulses() {
 
 double ContactSolver::sweepJoints() {
   double delta2 = 0.0;
-  // Ball blocks: P = -K^-1 (Cdot + bias), applied at both anchors.
+  // Ball blocks: P = -K^-1 Cdot on the velocities, applied at both anchors. The drift is
+  // removed on the pseudo-velocities (split impulse, as for contacts): a Baumgarte bias in
+  // the velocities would be real motion that friction has to hold (a chain on a rod creeps).
   for (BallRow& r : balls_) {
     const size_t a = static_cast<size_t>(r.a), b = static_cast<size_t>(r.b);
     const Vec3 cdot = (v_[a] + w_[a].cross(r.ra)) - (v_[b] + w_[b].cross(r.rb));
-    const Vec3 p = -(r.inv_k * (cdot + r.bias));
+    const Vec3 p = -(r.inv_k * cdot);
     r.lambda += p;
     applyImpulse(r.a, r.b, p, inv_inertia_[a] * r.ra.cross(p), inv_inertia_[b] * r.rb.cross(p));
     delta2 += p.squaredNorm();
+    // Pseudo-velocity block toward -bias.
+    const Vec3 cdot_p = (vp_[a] + wp_[a].cross(r.ra)) - (vp_[b] + wp_[b].cross(r.rb));
+    const Vec3 pp = -(r.inv_k * (cdot_p + r.bias));
+    vp_[a] += inv_mass_[a] * pp;
+    wp_[a] += inv_inertia_[a] * r.ra.cross(pp);
+    vp_[b] -= inv_mass_[b] * pp;
+    wp_[b] -= inv_inertia_[b] * r.rb.cross(pp);
   }
   // Scalar rows, unbounded.
   for (AxisRow& r : axes_) {
