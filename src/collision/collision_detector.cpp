@@ -116,8 +116,8 @@ struct CollisionDetector::Impl {
 
   std::vector<std::pair<int, int>> plane_pairs;  // record pairs found by the broadphase
   std::vector<std::pair<int, int>> sdf_pairs;
-  std::vector<Contact> contacts;
-  std::vector<Contact> unsorted;  // the previous step's buffer, reused
+  std::vector<Contact> contacts;  // this call's contacts in the order found
+  std::vector<Contact> sorted;    // detect's result when the caller gives no vector
   struct SortKey {
     BodyId a, b;
     uint64_t key;
@@ -193,7 +193,7 @@ struct CollisionDetector::Impl {
   // Deterministic order (SPEC: same input, same contacts): by (body_a, body_b, key), ties in
   // the order found. Small keys are sorted and each contact moved once: sorting the contacts
   // themselves (several hundred bytes each) cost more per contact as the pile grew.
-  void sortContacts() {
+  void sortInto(std::vector<Contact>& out) {
     order.resize(contacts.size());
     for (size_t i = 0; i < contacts.size(); ++i) {
       const Contact& c = contacts[i];
@@ -202,10 +202,11 @@ struct CollisionDetector::Impl {
     std::sort(order.begin(), order.end(), [](const SortKey& x, const SortKey& y) {
       return std::tie(x.a, x.b, x.key, x.index) < std::tie(y.a, y.b, y.key, y.index);
     });
-    unsorted.swap(contacts);
-    contacts.resize(unsorted.size());
-    for (size_t i = 0; i < order.size(); ++i) contacts[i] = unsorted[order[i].index];
+    out.resize(contacts.size());
+    for (size_t i = 0; i < order.size(); ++i) out[i] = contacts[order[i].index];
   }
+
+  void collect(std::span<const Body> bodies);
 
   void build(std::span<const Body> bodies);
   void createWorld();
@@ -365,6 +366,7 @@ void CollisionDetector::setBodies(std::span<const Body> bodies, const CollisionS
   s.scale = bulletScale(bodies);
   s.sdf.reset(settings);
   s.contacts.clear();
+  s.sorted.clear();
   s.body_types.clear();
   try {
     s.build(bodies);
@@ -393,29 +395,38 @@ void CollisionDetector::Impl::build(std::span<const Body> bodies) {
   }
 }
 
-const std::vector<Contact>& CollisionDetector::detect(std::span<const Body> bodies) {
-  Impl& s = *impl_;
-  if (bodies.size() != s.body_types.size()) {
+void CollisionDetector::Impl::collect(std::span<const Body> bodies) {
+  if (bodies.size() != body_types.size()) {
     throw Error("collision: detect got " + std::to_string(bodies.size()) +
-                " bodies, setBodies had " + std::to_string(s.body_types.size()));
+                " bodies, setBodies had " + std::to_string(body_types.size()));
   }
   // Poses of this call, in double for the contact geometry and in float for Bullet.
-  for (ShapeRecord& rec : s.records) {
+  for (ShapeRecord& rec : records) {
     rec.world = bodies[rec.body].pose * rec.shape.local;
-    rec.object->setWorldTransform(toBt(rec.world, s.scale));
+    rec.object->setWorldTransform(toBt(rec.world, scale));
   }
-  s.contacts.clear();
-  s.plane_pairs.clear();
-  s.sdf_pairs.clear();
-  if (s.world) s.world->performDiscreteCollisionDetection();
-  if (s.dispatcher) s.collectManifolds();
-  for (const auto& [r0, r1] : s.plane_pairs) s.collectPlane(r0, r1);
-  for (const auto& [r0, r1] : s.sdf_pairs) {
-    sdfPairContacts(s.records[static_cast<size_t>(r0)], s.records[static_cast<size_t>(r1)],
-                    s.settings, s.sdf, s.contacts);
+  contacts.clear();
+  plane_pairs.clear();
+  sdf_pairs.clear();
+  if (world) world->performDiscreteCollisionDetection();
+  if (dispatcher) collectManifolds();
+  for (const auto& [r0, r1] : plane_pairs) collectPlane(r0, r1);
+  for (const auto& [r0, r1] : sdf_pairs) {
+    sdfPairContacts(records[static_cast<size_t>(r0)], records[static_cast<size_t>(r1)], settings,
+                    sdf, contacts);
   }
-  s.sortContacts();
-  return s.contacts;
+}
+
+const std::vector<Contact>& CollisionDetector::detect(std::span<const Body> bodies) {
+  impl_->collect(bodies);
+  impl_->sortInto(impl_->sorted);
+  return impl_->sorted;
+}
+
+void CollisionDetector::detect(std::span<const Body> bodies, std::vector<Contact>& out) {
+  // Straight into the caller's vector: one pass over the contacts fewer than copying them.
+  impl_->collect(bodies);
+  impl_->sortInto(out);
 }
 
 void CollisionDetector::ignorePair(BodyId a, BodyId b) {

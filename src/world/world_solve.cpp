@@ -55,8 +55,7 @@ void World::collide() {
     slop_ = automaticSlop();
     bodies_changed_ = false;
   }
-  const std::vector<Contact>& found = collision_->detect(bodies_);
-  contacts_.assign(found.begin(), found.end());
+  collision_->detect(bodies_, contacts_);
 }
 
 void World::computeFriction() {

@@ -73,6 +73,8 @@ class CollisionDetector {
   // non-dynamic bodies and pairs filtered by `ignore` are skipped. Contacts are sorted by
   // (body_a, body_b, key).
   const std::vector<Contact>& detect(std::span<const Body> bodies);
+  // The same contacts written into `out` (its previous contents replaced).
+  void detect(std::span<const Body> bodies, std::vector<Contact>& out);
   // Bodies joined by a joint may be excluded from colliding with each other.
   void ignorePair(BodyId a, BodyId b);
 
