@@ -35,6 +35,9 @@ struct RunOptions {
   std::string friction;  // empty: the scene's
   std::string frame;
   std::string sampler;
+  std::optional<int> directions;        // N
+  std::optional<double> patch_width;    // w (m)
+  std::optional<int> patch_resolution;  // R
   bool hash = false;
 };
 
@@ -182,6 +185,10 @@ SceneDesc loadWithOverrides(const RunOptions& opt) {
     }
     scene.sampler = opt.sampler;
   }
+  FrictionSettings& friction = scene.settings.friction;
+  if (opt.directions) friction.directions = *opt.directions;
+  if (opt.patch_width) friction.patch_width = *opt.patch_width;
+  if (opt.patch_resolution) friction.patch_resolution = *opt.patch_resolution;
   return scene;
 }
 
@@ -263,6 +270,12 @@ void registerRunCommand(CLI::App& app) {
   sub->add_option("--frame", opt->frame, "Contact frame: world, body, auto or texture")
       ->check(CLI::IsMember({"world", "body", "auto", "texture"}));
   sub->add_option("--sampler", opt->sampler, "Friction sampler (constant, cone, cpu, ...)");
+  sub->add_option("--directions", opt->directions, "Sample directions N (SPEC 1)")
+      ->check(CLI::Range(kMinDirections, kMaxDirections));
+  sub->add_option("--patch-width", opt->patch_width, "Patch width w (m, SPEC 3)")
+      ->check(numberInRange(1e-6, 100.0));
+  sub->add_option("--patch-res", opt->patch_resolution, "Patch resolution R (pixels per side)")
+      ->check(CLI::Range(1, 256));
 
   sub->callback([opt] { runScene(*opt); });
 }

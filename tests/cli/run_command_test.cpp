@@ -123,6 +123,27 @@ TEST(RunCommand, FrictionAndFrameOverrideTheScene) {
             run({"run", editedScene("settings.json", "sampler", "constant")}));
 }
 
+TEST(RunCommand, PatchSettingsOverrideTheScene) {
+  // settings.json samples with the cone provider; the cpu sampler reads N, w and R.
+  const std::string base = example("settings.json");
+  nlohmann::json j = nlohmann::json::parse(slurpBinary(base));
+  j["settings"]["sampler"] = "cpu";
+  j["settings"]["directions"] = 12;
+  j["settings"]["patch_width"] = 0.05;
+  j["settings"]["patch_resolution"] = 8;
+  const std::string edited = test::tempDir("run") + "/settings.json";
+  std::ofstream(edited) << j.dump(2);
+  const std::vector<std::string> common = {"--steps", "40", "--hash", "--sampler", "cpu"};
+  auto run = [&](std::vector<std::string> args) {
+    args.insert(args.end(), common.begin(), common.end());
+    return hashOf(args);
+  };
+  const std::string overridden =
+      run({"run", base, "--directions", "12", "--patch-width", "0.05", "--patch-res", "8"});
+  EXPECT_EQ(overridden, run({"run", edited}));
+  EXPECT_NE(overridden, run({"run", base}));
+}
+
 TEST(RunCommand, BadValuesAreOneLineErrors) {
   const std::string scene = example("minimal.json");
   expectOneLineError(runCli({"run", scene, "--friction", "cone"}), "--friction");
@@ -132,6 +153,11 @@ TEST(RunCommand, BadValuesAreOneLineErrors) {
   expectOneLineError(runCli({"run", scene, "--seconds", "nan"}), "--seconds");
   expectOneLineError(runCli({"run", scene, "--steps", "3", "--seconds", "1"}), "--seconds");
   expectOneLineError(runCli({"run", scene, "--sampler", "velvet"}), "--sampler: unknown");
+  expectOneLineError(runCli({"run", scene, "--directions", "3"}), "--directions");
+  expectOneLineError(runCli({"run", scene, "--directions", "65"}), "--directions");
+  expectOneLineError(runCli({"run", scene, "--patch-width", "0"}), "--patch-width");
+  expectOneLineError(runCli({"run", scene, "--patch-width", "nan"}), "--patch-width");
+  expectOneLineError(runCli({"run", scene, "--patch-res", "0"}), "--patch-res");
   expectOneLineError(runCli({"run", scene, "--steps", "1", "--out", "/nonexistent/dir/t.csv"}),
                      "--out");
   expectOneLineError(runCli({"run"}), "SCENE");
