@@ -26,6 +26,7 @@
 #include <btBulletCollisionCommon.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <map>
 #include <set>
@@ -119,11 +120,12 @@ struct CollisionDetector::Impl {
   std::vector<Contact> contacts;  // this call's contacts in the order found
   std::vector<Contact> sorted;    // detect's result when the caller gives no vector
   struct SortKey {
-    BodyId a, b;
+    BodyId b;
     uint64_t key;
     uint32_t index;
   };
   std::vector<SortKey> order;
+  std::vector<size_t> bucket_start;  // per body_a, for sortInto
   uint64_t next_point_id = 1;
 
   ~Impl() { release(); }
@@ -191,17 +193,39 @@ struct CollisionDetector::Impl {
   }
 
   // Deterministic order (SPEC: same input, same contacts): by (body_a, body_b, key), ties in
-  // the order found. Small keys are sorted and each contact moved once: sorting the contacts
-  // themselves (several hundred bytes each) cost more per contact as the pile grew.
+  // the order found. Linear in the contacts: a counting pass buckets them by body_a, then each
+  // bucket (a body's few contacts) is insertion-sorted by (body_b, key); only small keys move,
+  // and each contact is copied once (sorting whole contacts, several hundred bytes each, with
+  // a comparison sort cost more per contact as the pile grew).
   void sortInto(std::vector<Contact>& out) {
+    bucket_start.assign(body_types.size() + 1, 0);
+    for (const Contact& c : contacts) ++bucket_start[c.body_a + 1];
+    for (size_t b = 1; b < bucket_start.size(); ++b) bucket_start[b] += bucket_start[b - 1];
     order.resize(contacts.size());
     for (size_t i = 0; i < contacts.size(); ++i) {
       const Contact& c = contacts[i];
-      order[i] = SortKey{c.body_a, c.body_b, c.key, static_cast<uint32_t>(i)};
+      order[bucket_start[c.body_a]++] = SortKey{c.body_b, c.key, static_cast<uint32_t>(i)};
     }
-    std::sort(order.begin(), order.end(), [](const SortKey& x, const SortKey& y) {
-      return std::tie(x.a, x.b, x.key, x.index) < std::tie(y.a, y.b, y.key, y.index);
-    });
+    // bucket_start[b] now ends bucket b; bucket b begins where bucket b - 1 ends. Small
+    // buckets by insertion, a body with many contacts by a comparison sort.
+    const auto less = [](const SortKey& x, const SortKey& y) {
+      return std::tie(x.b, x.key, x.index) < std::tie(y.b, y.key, y.index);
+    };
+    size_t begin = 0;
+    for (const size_t end : bucket_start) {
+      if (end - begin > 16) {
+        std::sort(order.begin() + static_cast<std::ptrdiff_t>(begin),
+                  order.begin() + static_cast<std::ptrdiff_t>(end), less);
+      } else {
+        for (size_t i = begin + 1; i < end; ++i) {
+          const SortKey k = order[i];
+          size_t j = i;
+          for (; j > begin && less(k, order[j - 1]); --j) order[j] = order[j - 1];
+          order[j] = k;
+        }
+      }
+      begin = end;
+    }
     out.resize(contacts.size());
     for (size_t i = 0; i < order.size(); ++i) out[i] = contacts[order[i].index];
   }
