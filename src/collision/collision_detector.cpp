@@ -233,15 +233,22 @@ struct CollisionDetector::Impl {
   void collect(std::span<const Body> bodies);
 
   void build(std::span<const Body> bodies);
-  void createWorld();
+  void createWorld(size_t shape_count);
   void addBody(BodyId id, const Body& body);
   void collectManifolds();
   Contact manifoldContact(const btManifoldPoint& pt, const ShapeRecord& r0, const ShapeRecord& r1);
   void collectPlane(int r0, int r1);
 };
 
-void CollisionDetector::Impl::createWorld() {
-  config = std::make_unique<btDefaultCollisionConfiguration>();
+void CollisionDetector::Impl::createWorld(size_t shape_count) {
+  // Bullet's pools of manifolds and pair algorithms hold 4096 each by default; past that every
+  // new pair is a separate heap allocation, scattered in memory, and a large pile's steps slow
+  // down per contact. Room for eight pairs per shape (at most 65536 each).
+  btDefaultCollisionConstructionInfo info;
+  const int pool = static_cast<int>(std::clamp<size_t>(8 * shape_count, 4096, 65536));
+  info.m_defaultMaxPersistentManifoldPoolSize = pool;
+  info.m_defaultMaxCollisionAlgorithmPoolSize = pool;
+  config = std::make_unique<btDefaultCollisionConfiguration>(info);
   dispatcher = std::make_unique<Dispatcher>(config.get(), this);
   dispatcher->setDispatcherFlags(btCollisionDispatcher::CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
   dispatcher->setNearCallback(&Impl::nearCallback);
@@ -403,7 +410,9 @@ void CollisionDetector::setBodies(std::span<const Body> bodies, const CollisionS
 }
 
 void CollisionDetector::Impl::build(std::span<const Body> bodies) {
-  createWorld();
+  size_t shape_count = 0;
+  for (const Body& b : bodies) shape_count += b.shapes.size();
+  createWorld(shape_count);
   // Records for every shape of every body, then the Bullet objects.
   for (size_t b = 0; b < bodies.size(); ++b) {
     body_types.push_back(bodies[b].type);
