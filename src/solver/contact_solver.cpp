@@ -59,13 +59,15 @@ void ContactSolver::prepareContact(const Contact& c, ContactRow& row) const {
   const Vec3 rb = c.point - position_[b];
   row.n = c.normal;
   row.t = c.t;
-  row.bt = c.b;
+  // b = n x t (SPEC 1: right-handed (t, b, n), as the frame stage sets it); rows do not
+  // store it: the sweep recomputes it, which costs less than streaming it from memory.
+  const Vec3 bt = c.normal.cross(c.t);
   // Angular Jacobians r x d and their images I^-1 (r x d).
   row.ra = ra;
   row.rb = rb;
   const Vec3 ra_n = ra.cross(row.n), rb_n = rb.cross(row.n);
   const Vec3 ra_t = ra.cross(row.t), rb_t = rb.cross(row.t);
-  const Vec3 ra_b = ra.cross(row.bt), rb_b = rb.cross(row.bt);
+  const Vec3 ra_b = ra.cross(bt), rb_b = rb.cross(bt);
   row.ia_n = inv_inertia_[a] * ra_n;
   row.ib_n = inv_inertia_[b] * rb_n;
   row.ia_t = inv_inertia_[a] * ra_t;
@@ -85,7 +87,7 @@ void ContactSolver::prepareContact(const Contact& c, ContactRow& row) const {
   // sees the normal row's update without recomputing the relative velocity.
   const Vec3 coupling = im * row.n + row.ia_n.cross(ra) + row.ib_n.cross(rb);
   row.k_tn = row.t.dot(coupling);
-  row.k_bn = row.bt.dot(coupling);
+  row.k_bn = bt.dot(coupling);
   // K^-1 = [k11 -k01; -k01 k00] / det, kept as its three distinct entries.
   if (det > 1e-300) {
     row.inv_k = Vec3(k(1, 1) / det, -k(0, 1) / det, k(0, 0) / det);
@@ -168,6 +170,33 @@ void ContactSolver::scheduleRows() {
     }
   }
   while (head < pending_.size()) emit(pending_[head++]);
+  storeInSweepOrder();
+}
+
+void ContactSolver::storeInSweepOrder() {
+  // Rows and limits stored in sweep order: each sweep streams through memory front to back,
+  // so the prefetcher hides the misses once the rows outgrow the cache. slot_ maps a contact
+  // to its row.
+  const size_t n = rows_.size();
+  slot_.resize(n);
+  sorted_.resize(n);
+  for (size_t k = 0; k < n; ++k) {
+    const size_t i = static_cast<size_t>(order_[k]);
+    slot_[i] = static_cast<int>(k);
+    sorted_[k] = rows_[i];
+  }
+  rows_.swap(sorted_);
+  auto permute = [&](auto& limits) {
+    if (limits.size() != n) return;
+    std::remove_reference_t<decltype(limits)> sorted;
+    sorted.reserve(n);
+    for (size_t k = 0; k < n; ++k)
+      sorted.push_back(std::move(limits[static_cast<size_t>(order_[k])]));
+    limits.swap(sorted);
+  };
+  permute(coulomb_);
+  permute(box_);
+  permute(polygon_);
 }
 
 bool ContactSolver::Cached::operator<(const Cached& o) const {
@@ -197,7 +226,8 @@ void ContactSolver::warmStartRow(const Cached& cached, ContactRow& row, size_t i
   const auto range = std::make_pair(&cached, &cached + 1);
   row.lambda_n = range.first->lambda_n;
   if (!friction_) return;
-  const Vec2 tb(range.first->tangential.dot(row.t), range.first->tangential.dot(row.bt));
+  const Vec2 tb(range.first->tangential.dot(row.t),
+                range.first->tangential.dot(row.n.cross(row.t)));
   Vec2 projected = tb;
   switch (settings_.limit_surface) {
     case LimitSurfaceKind::Coulomb:
@@ -224,8 +254,10 @@ void ContactSolver::applyImpulse(int a, int b, const Vec3& p, const Vec3& ia, co
 
 void ContactSolver::warmStart() {
   warmStartJoints();
-  for (const ContactRow& r : rows_) {
-    const Vec3 p = r.lambda_n * r.n + r.lambda_t * r.t + r.lambda_b * r.bt;
+  // Contact order (not sweep order): the same sums as before the rows were reordered.
+  for (const int k : slot_) {
+    const ContactRow& r = rows_[static_cast<size_t>(k)];
+    const Vec3 p = r.lambda_n * r.n + r.lambda_t * r.t + r.lambda_b * r.n.cross(r.t);
     const Vec3 ia = r.lambda_n * r.ia_n + r.lambda_t * r.ia_t + r.lambda_b * r.ia_b;
     const Vec3 ib = r.lambda_n * r.ib_n + r.lambda_t * r.ib_t + r.lambda_b * r.ib_b;
     applyImpulse(r.a, r.b, p, ia, ib);
@@ -235,8 +267,7 @@ void ContactSolver::warmStart() {
 template <class Limit>
 double ContactSolver::sweepContacts(std::span<const Limit> limits) {
   double delta2 = 0.0;
-  for (const int index : order_) {
-    const size_t i = static_cast<size_t>(index);
+  for (size_t i = 0; i < rows_.size(); ++i) {
     ContactRow& r = rows_[i];
     const size_t a = static_cast<size_t>(r.a), b = static_cast<size_t>(r.b);
     // Local copies: the compiler need not reload the row after each velocity write.
@@ -255,7 +286,8 @@ double ContactSolver::sweepContacts(std::span<const Limit> limits) {
       // Tangential block: the tangential velocity after the normal update (through the
       // coupling K_tn, K_bn), the unconstrained 2x2 update, then the accumulated impulse
       // projected on the limit surface for the current lambda_n (SPEC 4).
-      const Vec2 vel(r.t.dot(dv) + dn * r.k_tn, r.bt.dot(dv) + dn * r.k_bn);
+      const Vec3 bt = r.n.cross(r.t);
+      const Vec2 vel(r.t.dot(dv) + dn * r.k_tn, bt.dot(dv) + dn * r.k_bn);
       const Vec2 old(r.lambda_t, r.lambda_b);
       bool outside = false;
       const Vec2 step(r.inv_k.x() * vel.x() + r.inv_k.y() * vel.y(),
@@ -271,7 +303,7 @@ double ContactSolver::sweepContacts(std::span<const Limit> limits) {
       const Vec2 d = next - old;
       r.lambda_t = next.x();
       r.lambda_b = next.y();
-      p += d.x() * r.t + d.y() * r.bt;
+      p += d.x() * r.t + d.y() * bt;
       ia += d.x() * r.ia_t + d.y() * r.ia_b;
       ib += d.x() * r.ib_t + d.y() * r.ib_b;
       delta2 += d.squaredNorm();
@@ -336,12 +368,12 @@ void ContactSolver::finish(std::span<Body> bodies, std::span<Contact> contacts) 
   }
   cache_.clear();
   for (size_t i = 0; i < rows_.size() && i < contacts.size(); ++i) {
-    const ContactRow& r = rows_[i];
+    const ContactRow& r = rows_[static_cast<size_t>(slot_[i])];
     contacts[i].lambda_n = r.lambda_n;
     contacts[i].lambda_t = r.lambda_t;
     contacts[i].lambda_b = r.lambda_b;
     cache_.push_back({contacts[i].body_a, contacts[i].body_b, contacts[i].key, r.lambda_n,
-                      r.lambda_t * r.t + r.lambda_b * r.bt});
+                      r.lambda_t * r.t + r.lambda_b * r.n.cross(r.t)});
   }
   // Sorted by (body_a, body_b, key) for the next step's lookups; contacts usually arrive in
   // that order already (stable: ties keep contact order).

@@ -76,7 +76,7 @@ class ContactSolver {
   // One contact: Jacobians, I^-1 J^T, effective masses and accumulated impulses.
   struct ContactRow {
     int a = 0, b = 0;
-    Vec3 n, t, bt;                            // normal and tangents (world)
+    Vec3 n, t;                                // normal and tangent t (world); b = n x t
     Vec3 ra, rb;                              // contact point from each centre of mass
     Vec3 ia_n, ib_n, ia_t, ib_t, ia_b, ib_b;  // I^-1 (r x direction)
     double mass_n = 0.0;                      // 1 / K_nn
@@ -117,6 +117,7 @@ class ContactSolver {
   const Cached* findCached(const Contact& c, size_t& cursor) const;
   void warmStartRow(const Cached& cached, ContactRow& row, size_t index) const;
   void scheduleRows();
+  void storeInSweepOrder();
   void warmStart();
   void warmStartJoints();
   void addAngularRow(int a, int b, int joint, int slot, const Vec3& u, double target);
@@ -137,8 +138,10 @@ class ContactSolver {
   std::vector<Quat> rotation_;
   // Rows.
   std::vector<ContactRow> rows_;
-  std::vector<int> order_;    // sweep order of the contact rows (see scheduleRows)
-  std::vector<int> pending_;  // scratch of scheduleRows
+  std::vector<int> order_;          // sweep order of the contact rows (see scheduleRows)
+  std::vector<int> pending_;        // scratch of scheduleRows
+  std::vector<int> slot_;           // contact i's row in rows_ (rows_ is stored in sweep order)
+  std::vector<ContactRow> sorted_;  // scratch of storeInSweepOrder
   std::vector<CoulombLimit> coulomb_;
   std::vector<BoxLimit> box_;
   std::vector<PolygonLimit> polygon_;
