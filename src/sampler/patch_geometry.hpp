@@ -24,7 +24,10 @@ struct CachedMesh {
 };
 
 // Tessellation of curved shapes when they are meshed (segments around, rings pole to pole).
-inline constexpr int kCurvedSegments = 256;
+// 1024 around keeps a chord within r (pi / 1024)^2 / 2 of the exact surface that the CPU
+// sampler ray-casts (0.1 um on a 4 mm bolt, against 1.5 um with 256, enough to move a pixel
+// centre across a thin depth clip).
+inline constexpr int kCurvedSegments = 1024;
 inline constexpr int kCurvedRings = 128;
 
 // Shape meshes by mesh data and mapping; also tessellated spheres, capsules and cylinders.

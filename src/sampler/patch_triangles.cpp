@@ -49,11 +49,63 @@ int clipPolygon(const Corner* in, int count, int axis, double sign, double limit
   return n;
 }
 
+// Exact edge tests of triangle (a, b, c) as the CPU sampler's makePlanar sets them up: made
+// counter-clockwise in the contact plane, then inside when e > 0, or e == 0 on a top or left
+// edge. Bit k of `edge_mask` keeps edge k (from corner k to corner k + 1); the others pass.
+struct EdgeTests {
+  float e[3][4] = {{0, 0, 1, 1}, {0, 0, 1, 1}, {0, 0, 1, 1}};
+};
+
+EdgeTests edgeTests(const Corner& a, const Corner& b, const Corner& c, unsigned edge_mask) {
+  EdgeTests tests;
+  const Vec3* p[3] = {&a.p, &b.p, &c.p};
+  const double area =
+      (b.p.x() - a.p.x()) * (c.p.y() - a.p.y()) - (b.p.y() - a.p.y()) * (c.p.x() - a.p.x());
+  for (int k = 0; k < 3; ++k) {
+    if ((edge_mask & (1u << k)) == 0) continue;
+    // Clockwise triangles (side A seen from +n) run their edges backwards.
+    const Vec3& from = area >= 0.0 ? *p[k] : *p[(k + 1) % 3];
+    const Vec3& to = area >= 0.0 ? *p[(k + 1) % 3] : *p[k];
+    const double ea = -(to.y() - from.y()), eb = to.x() - from.x();
+    const double len = std::hypot(ea, eb);
+    if (!(len > 0.0)) continue;
+    const double ec = -(ea * from.x() + eb * from.y());
+    const bool inclusive = to.y() < from.y() || (to.y() == from.y() && to.x() < from.x());
+    float* e = tests.e[static_cast<size_t>(k)];
+    e[0] = static_cast<float>(ea / len);
+    e[1] = static_cast<float>(eb / len);
+    e[2] = static_cast<float>(ec / len);
+    e[3] = inclusive ? 1.0f : 0.0f;
+  }
+  return tests;
+}
+
+// Moves every edge of the triangle's projection outward by 1/64 pixel (scaling about its
+// incentre, attributes extrapolated alike), so that the rasteriser's snapped edges still
+// produce every fragment the exact edge tests keep; the tests discard the rest. Triangles
+// narrower than a pixel (near edge-on faces) are left to the rasteriser as they are: their
+// depth varies too fast across them for a pixel centre on their edge to be decided alike.
+void grow(Corner* tri, double pixel) {
+  const double la = (tri[2].p - tri[1].p).head<2>().norm();
+  const double lb = (tri[0].p - tri[2].p).head<2>().norm();
+  const double lc = (tri[1].p - tri[0].p).head<2>().norm();
+  const double perimeter = la + lb + lc;
+  const Vec3 e1 = tri[1].p - tri[0].p, e2 = tri[2].p - tri[0].p;
+  const double inradius = std::abs(e1.x() * e2.y() - e1.y() * e2.x()) / perimeter;
+  if (!(inradius >= pixel)) return;
+  // The incentre as a corner: weights la, lb, lc (as two lerps).
+  const Corner ab = lerp(tri[0], tri[1], lb / (la + lb));
+  const Corner centre = lerp(ab, tri[2], lc / perimeter);
+  const double scale = 1.0 + pixel / 64.0 / inradius;
+  for (int k = 0; k < 3; ++k) tri[k] = lerp(centre, tri[k], scale);
+}
+
 // A triangle clipped to the footprint (one pixel wider on each side, so the vertices the GPU
 // sees stay near the tile whatever the shape's size) and kept when its depth range meets the
-// volume's; whole repeats of the first uv removed; fan-triangulated.
+// volume's; whole repeats of the first uv removed; fan-triangulated. Box faces carry their sides'
+// exact tests (edge_mask, see edgeTests) and are grown to let the tests decide.
 void emit(const Volume& volume, const Corner& a, const Corner& b, const Corner& c,
-          std::vector<PatchVertex>& out) {
+          unsigned edge_mask, std::vector<PatchVertex>& out) {
   const double zmin = std::min({a.p.z(), b.p.z(), c.p.z()});
   const double zmax = std::max({a.p.z(), b.p.z(), c.p.z()});
   if (zmin > volume.half_depth || zmax < -volume.half_depth) return;
@@ -68,10 +120,15 @@ void emit(const Volume& volume, const Corner& a, const Corner& b, const Corner& 
     }
   }
   const double du = std::floor(poly[cur][0].u), dv = std::floor(poly[cur][0].v);
+  const EdgeTests tests = edgeTests(a, b, c, edge_mask);
   for (int k = 1; k + 1 < count; ++k) {
-    out.push_back(toVertex(poly[cur][0], du, dv));
-    out.push_back(toVertex(poly[cur][k], du, dv));
-    out.push_back(toVertex(poly[cur][k + 1], du, dv));
+    Corner tri[3] = {poly[cur][0], poly[cur][k], poly[cur][k + 1]};
+    if (edge_mask != 0) grow(tri, volume.pixel);
+    for (const Corner& corner : tri) {
+      PatchVertex v = toVertex(corner, du, dv);
+      std::copy(&tests.e[0][0], &tests.e[0][0] + 12, &v.edges[0][0]);
+      out.push_back(v);
+    }
   }
 }
 
@@ -96,8 +153,9 @@ void boxTriangles(const Volume& volume, const Shape& shape, const Mat3& m, const
       const Vec3 p = centre + su[k] * et + sv[k] * eb;
       q[k] = {m * p + o, scale * p.dot(tex.t), scale * p.dot(tex.b), m * tex.t, m * tex.b, nc};
     }
-    emit(volume, q[0], q[1], q[2], out);
-    emit(volume, q[0], q[2], q[3], out);
+    // The quad's four sides are tested exactly; its diagonal is left to the rasteriser.
+    emit(volume, q[0], q[1], q[2], 0b011u, out);
+    emit(volume, q[0], q[2], q[3], 0b110u, out);
   }
 }
 
@@ -124,12 +182,13 @@ void planeTriangles(const Volume& volume, const Shape& shape, const Mat3& m, con
     q[k] = {pc, scale * pl.dot(tex.t), scale * pl.dot(tex.b), m * tex.t, m * tex.b, nc};
   }
   // Counter-clockwise seen from +n; reversed for A (which faces -n).
+  // The plane covers the whole footprint: no edge to test.
   if (side == Side::B) {
-    emit(volume, q[0], q[1], q[2], out);
-    emit(volume, q[0], q[2], q[3], out);
+    emit(volume, q[0], q[1], q[2], 0u, out);
+    emit(volume, q[0], q[2], q[3], 0u, out);
   } else {
-    emit(volume, q[0], q[2], q[1], out);
-    emit(volume, q[0], q[3], q[2], out);
+    emit(volume, q[0], q[2], q[1], 0u, out);
+    emit(volume, q[0], q[3], q[2], 0u, out);
   }
 }
 
@@ -163,7 +222,9 @@ void meshTriangles(const Volume& volume, const Shape& shape, const Mat3& m, cons
     }
     const Vec3 e1 = c[1].p - c[0].p, e2 = c[2].p - c[0].p;
     if (!facesOther(side, e1.x() * e2.y() - e1.y() * e2.x())) continue;
-    emit(volume, c[0], c[1], c[2], out);
+    // Left to the rasteriser: mesh triangles (tessellations included) are mostly narrower
+    // than a pixel.
+    emit(volume, c[0], c[1], c[2], 0u, out);
   }
 }
 

@@ -12,13 +12,18 @@
 namespace asperity::patch {
 
 // One vertex: contact-frame position (relative to the contact point), uv in repeats (whole
-// repeats removed per triangle), and the tangent frame (contact frame).
+// repeats removed per triangle), the tangent frame (contact frame), and the exact coverage
+// test of the source triangle, the same on its three vertices: up to three edges (a, b, c,
+// inclusive) with inside at a x + b y + c > 0, or == 0 when inclusive (the CPU sampler's
+// top-left rule, evaluated per pixel centre instead of by the rasteriser's fixed-point snap);
+// (0, 0, 1, 1) where no edge applies (quad diagonals, planes, mesh triangles).
 struct PatchVertex {
   float p[3];
   float uv[2];
   float t[3];
   float b[3];
   float n[3];
+  float edges[3][4];
 };
 
 // Appends the triangles of `shape` at `pose` that face the other body (geometric normal along

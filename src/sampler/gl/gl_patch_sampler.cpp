@@ -109,7 +109,7 @@ struct GlPatchSampler::Impl {
 };
 
 void GlPatchSampler::Impl::setupVertexArray() {
-  // Interleaved PatchVertex: position, uv, tangent, bitangent, normal.
+  // Interleaved PatchVertex: position, uv, tangent, bitangent, normal, the three edge tests.
   vao = std::make_unique<gl::VertexArray>();
   vbo = std::make_unique<gl::Buffer>();
   glBindVertexArray(*vao);
@@ -123,7 +123,10 @@ void GlPatchSampler::Impl::setupVertexArray() {
                     {1, 2, offsetof(patch::PatchVertex, uv)},
                     {2, 3, offsetof(patch::PatchVertex, t)},
                     {3, 3, offsetof(patch::PatchVertex, b)},
-                    {4, 3, offsetof(patch::PatchVertex, n)}};
+                    {4, 3, offsetof(patch::PatchVertex, n)},
+                    {5, 4, offsetof(patch::PatchVertex, edges)},
+                    {6, 4, offsetof(patch::PatchVertex, edges) + 4 * sizeof(float)},
+                    {7, 4, offsetof(patch::PatchVertex, edges) + 8 * sizeof(float)}};
   for (const auto& a : attributes) {
     glEnableVertexAttribArray(a.index);
     glVertexAttribPointer(a.index, a.size, GL_FLOAT, GL_FALSE, stride,
@@ -197,6 +200,7 @@ void GlPatchSampler::Impl::render(const FrictionSettings& settings) {
     }
     glUniform2fv(program.location("u_directions"), 4 * groups, d.data());
     program.set("u_half_width", static_cast<float>(0.5 * settings.patch_width));
+    program.set("u_pixel", static_cast<float>(settings.patch_width / r));
     program.set("u_mu_max", settings.mu_max);
     program.set("u_scale", atlas.floatTargets() ? 1.0f : 1.0f / settings.mu_max);
     program.set("u_normal_map", 0);
@@ -204,7 +208,10 @@ void GlPatchSampler::Impl::render(const FrictionSettings& settings) {
     atlas.beginSubPass(s);
     for (const Draw& draw : draws) {
       // The tile is the viewport; the depth clip depends on the contact's phi.
-      glViewport((draw.tile % per_row) * r, (draw.tile / per_row) * r, r, r);
+      const int x0 = (draw.tile % per_row) * r, y0 = (draw.tile / per_row) * r;
+      glViewport(x0, y0, r, r);
+      glUniform2f(program.location("u_tile_origin"), static_cast<float>(x0),
+                  static_cast<float>(y0));
       program.set("u_side", draw.side);
       program.set("u_half_depth", draw.half_depth);
       program.set("u_has_map", draw.map != 0 ? 1 : 0);

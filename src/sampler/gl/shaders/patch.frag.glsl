@@ -7,6 +7,9 @@ in vec2 v_uv;
 in vec3 v_tangent;
 in vec3 v_bitangent;
 in vec3 v_normal;
+flat in vec4 v_edge0;
+flat in vec4 v_edge1;
+flat in vec4 v_edge2;
 
 uniform sampler2D u_normal_map;
 uniform sampler2D u_mask;
@@ -15,6 +18,9 @@ uniform bool u_has_mask;
 uniform float u_side;
 uniform float u_mu_max;
 uniform float u_scale;
+uniform float u_half_width;
+uniform float u_pixel;
+uniform vec2 u_tile_origin;  // the tile's lower-left corner in the atlas (window pixels)
 uniform vec2 u_directions[28];  // this pass's directions, GROUPS x 4 used
 
 layout(location = 0) out vec4 o_coverage;
@@ -45,7 +51,20 @@ vec4 group(vec2 g, float gain, int k) {
   return mu * (gain * u_scale);
 }
 
+// The CPU sampler's exact coverage test of one edge at contact-frame point p (top-left rule).
+bool insideEdge(vec4 e, vec2 p) {
+  float value = e.x * p.x + e.y * p.y + e.z;
+  return value > 0.0 || (value == 0.0 && e.w > 0.5);
+}
+
 void main() {
+  // The pixel centre in the contact frame: the source triangle's edges decide coverage there,
+  // not the rasteriser's snapped vertices (a centre within 1/256 pixel of an edge).
+  vec2 centre = (gl_FragCoord.xy - u_tile_origin) * u_pixel - vec2(u_half_width);
+  if (!insideEdge(v_edge0, centre) || !insideEdge(v_edge1, centre) ||
+      !insideEdge(v_edge2, centre)) {
+    discard;
+  }
   vec3 m_tangent = u_has_map ? texture(u_normal_map, v_uv).xyz : vec3(0.0, 0.0, 1.0);
   vec3 m = v_tangent * m_tangent.x + v_bitangent * m_tangent.y + v_normal * m_tangent.z;
   vec2 g = ploughingVector(m, u_side, u_mu_max);

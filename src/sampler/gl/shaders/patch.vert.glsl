@@ -8,6 +8,9 @@ layout(location = 1) in vec2 a_uv;
 layout(location = 2) in vec3 a_tangent;
 layout(location = 3) in vec3 a_bitangent;
 layout(location = 4) in vec3 a_normal;
+layout(location = 5) in vec4 a_edge0;  // the triangle's exact edge tests (patch_triangles.hpp)
+layout(location = 6) in vec4 a_edge1;
+layout(location = 7) in vec4 a_edge2;
 
 uniform float u_half_width;
 uniform float u_half_depth;
@@ -17,6 +20,9 @@ out vec2 v_uv;
 out vec3 v_tangent;
 out vec3 v_bitangent;
 out vec3 v_normal;
+flat out vec4 v_edge0;
+flat out vec4 v_edge1;
+flat out vec4 v_edge2;
 
 void main() {
   gl_Position = vec4(a_position.xy / u_half_width, -u_side * a_position.z / u_half_depth, 1.0);
@@ -24,4 +30,7 @@ void main() {
   v_tangent = a_tangent;
   v_bitangent = a_bitangent;
   v_normal = a_normal;
+  v_edge0 = a_edge0;
+  v_edge1 = a_edge1;
+  v_edge2 = a_edge2;
 }
