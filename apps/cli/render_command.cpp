@@ -5,6 +5,7 @@
 #if ASPERITY_HAVE_RENDER
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -93,6 +94,18 @@ void showProgress(int done, int total) {
   std::fflush(stderr);
 }
 
+// The scene's own "camera", with clip planes that follow its distance like --camera's.
+render::Camera sceneCamera(const SceneCamera& sc) {
+  render::Camera c;
+  c.eye = sc.eye;
+  c.target = sc.target;
+  c.fov_y = sc.fov_y;
+  const double distance = (c.eye - c.target).norm();
+  c.near_plane = std::max(1e-3, distance * 0.02);
+  c.far_plane = distance * 20.0 + 50.0;
+  return c;
+}
+
 // Steps until the world's time reaches t (to the nearest step).
 void advanceTo(World& world, double t) {
   const double dt = world.settings().dt;
@@ -135,8 +148,10 @@ void runRender(const RenderCommandOptions& o) {
   ro.samples = o.samples;
   render::Renderer renderer(ro);
   render::WorldView view;
-  const render::Camera cam =
-      o.camera.empty() ? view.defaultCamera(*world, double(width) / height) : user_camera;
+  // --camera, else the scene's camera, else one framing the bodies.
+  const render::Camera cam = !o.camera.empty() ? user_camera
+                             : scene.camera    ? sceneCamera(*scene.camera)
+                                               : view.defaultCamera(*world, double(width) / height);
   render::RenderScene frame_scene;
   auto renderAt = [&](double t) {
     advanceTo(*world, t);
@@ -184,7 +199,8 @@ void registerRenderCommand(CLI::App& app) {
   sub->add_option("--fps", opt->fps, "Frames per second of simulated time")->capture_default_str();
   sub->add_option("--size", opt->size, "Image size WIDTHxHEIGHT")->capture_default_str();
   sub->add_option("--camera", opt->camera,
-                  "eye_x,eye_y,eye_z,target_x,target_y,target_z (m); default frames the bodies");
+                  "eye_x,eye_y,eye_z,target_x,target_y,target_z (m); default: the scene's "
+                  "camera, else one framing the bodies");
   sub->add_option("--layers", opt->layers,
                   "Debug layers: contacts,frames,cones,patches (or all, none)")
       ->capture_default_str();

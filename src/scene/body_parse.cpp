@@ -75,7 +75,8 @@ GeneratorSpec parseGenerator(JsonReader r, const std::string& base_dir) {
   return spec;
 }
 
-// "surface": the normal map (file or generator), its mapping, gain k and mask (SPEC 3, 6).
+// "surface": the normal map (file or generator), its mapping, gain k and mask (SPEC 3, 6), and
+// the base colour it is drawn with.
 Surface parseSurface(JsonReader r, const std::string& base_dir) {
   Surface s;
   if (r.has("normal_map")) {
@@ -94,6 +95,8 @@ Surface parseSurface(JsonReader r, const std::string& base_dir) {
   s.texture_rotation =
       radiansFromDegrees(r.number("texture_rotation_deg", 0.0, Range::closed(-1e6, 1e6)));
   if (r.has("mask")) s.mask_file = existingFile(r, "mask", base_dir);
+  // Linear RGB albedo for the renderer; no effect on friction.
+  s.base_color = r.vec3("base_color", s.base_color, Range::closed(0.0, 1.0));
   r.finish();
   return s;
 }

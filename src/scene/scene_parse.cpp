@@ -134,6 +134,18 @@ SceneLoad parseLoad(JsonReader r, const std::set<std::string>& names) {
   return l;
 }
 
+// "camera": eye and target (m), vertical field of view in degrees.
+SceneCamera parseSceneCamera(JsonReader r) {
+  SceneCamera c;
+  c.eye = r.requiredVec3("eye", Range::closed(-kHuge, kHuge));
+  c.target = r.requiredVec3("target", Range::closed(-kHuge, kHuge));
+  if ((c.eye - c.target).norm() < 1e-9) r.failAt("target", "must differ from eye");
+  const Range fov{0.0, 180.0, true, true};
+  c.fov_y = radiansFromDegrees(r.number("fov_deg", degreesFromRadians(c.fov_y), fov));
+  r.finish();
+  return c;
+}
+
 }  // namespace
 
 }  // namespace scene
@@ -153,6 +165,7 @@ SceneDesc parseScene(const nlohmann::json& json, const std::string& file_for_mes
   for (JsonReader& r : root.objects("joints")) out.joints.push_back(parseJoint(r, names));
   for (JsonReader& r : root.objects("springs")) out.springs.push_back(parseSpring(r, names));
   for (JsonReader& r : root.objects("loads")) out.loads.push_back(parseLoad(r, names));
+  if (root.has("camera")) out.camera = parseSceneCamera(root.object("camera"));
   root.finish();
   return out;
 }

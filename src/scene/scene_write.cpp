@@ -60,6 +60,7 @@ json surfaceToJson(const Surface& s) {
   out["texture_size"] = s.texture_size;
   out["texture_rotation_deg"] = degreesFromRadians(s.texture_rotation);
   if (!s.mask_file.empty()) out["mask"] = s.mask_file;
+  out["base_color"] = toJson(s.base_color);
   return out;
 }
 
@@ -247,11 +248,17 @@ nlohmann::json sceneToJson(const SceneDesc& scene) {
   for (const SceneSpring& s : scene.springs) springs.push_back(springToJson(s));
   json loads = json::array();
   for (const SceneLoad& l : scene.loads) loads.push_back(loadToJson(l));
-  return {{"settings", settingsToJson(scene)},
-          {"bodies", bodies},
-          {"joints", joints},
-          {"springs", springs},
-          {"loads", loads}};
+  json out = {{"settings", settingsToJson(scene)},
+              {"bodies", bodies},
+              {"joints", joints},
+              {"springs", springs},
+              {"loads", loads}};
+  // The camera only when the scene chose one.
+  if (scene.camera)
+    out["camera"] = {{"eye", toJson(scene.camera->eye)},
+                     {"target", toJson(scene.camera->target)},
+                     {"fov_deg", degreesFromRadians(scene.camera->fov_y)}};
+  return out;
 }
 
 void saveScene(const SceneDesc& scene, const std::string& path) {

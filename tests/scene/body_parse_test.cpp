@@ -225,6 +225,30 @@ TEST(BodyParse, SurfaceRanges) {
             "\"yes\"");
 }
 
+TEST(BodyParse, BaseColour) {
+  const SceneDesc scene = loadScene(test::sourcePath("scenes/examples/looks.json"));
+  EXPECT_EQ(scene.bodies[1].shapes[0].surface.base_color, Vec3(0.42, 0.24, 0.11));
+  // Absent: the renderer's neutral grey.
+  const SceneDesc plain = loadScene(test::sourcePath("scenes/examples/minimal.json"));
+  EXPECT_EQ(plain.bodies[1].shapes[0].surface.base_color, Vec3(0.7, 0.7, 0.7));
+}
+
+TEST(BodyParse, BadBaseColour) {
+  EXPECT_EQ(loadError(withShape(R"({"type": "sphere", "radius": 0.1,
+                "surface": {"base_color": [0.5, 1.2, 0]}})")),
+            "FILE: /bodies/0/shapes/0/surface/base_color/1: must be a number in [0, 1], got 1.2");
+  EXPECT_EQ(loadError(withShape(R"({"type": "sphere", "radius": 0.1,
+                "surface": {"base_color": [0.5, -0.1, 0]}})")),
+            "FILE: /bodies/0/shapes/0/surface/base_color/1: must be a number in [0, 1], got -0.1");
+  const std::string short_colour = loadError(withShape(R"({"type": "sphere", "radius": 0.1,
+                "surface": {"base_color": [0.5, 0.5]}})"));
+  EXPECT_EQ(short_colour.rfind("FILE: /bodies/0/shapes/0/surface/base_color: ", 0), 0u)
+      << short_colour;
+  const std::string text = loadError(withShape(R"({"type": "sphere", "radius": 0.1,
+                "surface": {"base_color": "red"}})"));
+  EXPECT_EQ(text.rfind("FILE: /bodies/0/shapes/0/surface/base_color: ", 0), 0u) << text;
+}
+
 TEST(BodyParse, MissingMesh) {
   EXPECT_EQ(loadError(withShape(R"({"type": "convex_hull", "mesh": "rock.obj"})")),
             "FILE: /bodies/0/shapes/0/mesh: file not found: \"DIR/rock.obj\"");

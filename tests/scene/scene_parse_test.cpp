@@ -182,5 +182,38 @@ TEST(SceneParse, SpringAndLoadErrors) {
             "FILE: /loads/0/end: must be a number in [2, 1e+30], got 1");
 }
 
+TEST(SceneParse, Camera) {
+  const SceneDesc scene = loadScene(test::sourcePath("scenes/examples/looks.json"));
+  ASSERT_TRUE(scene.camera.has_value());
+  EXPECT_EQ(scene.camera->eye, Vec3(0.45, -0.55, 0.3));
+  EXPECT_EQ(scene.camera->target, Vec3(0.0, 0.0, 0.05));
+  EXPECT_TRUE(test::near(scene.camera->fov_y, kPi / 6.0, 1e-15));
+  // No "camera": none; one without fov_deg: 35 degrees.
+  EXPECT_FALSE(loadScene(test::sourcePath("scenes/examples/minimal.json")).camera.has_value());
+  const SceneDesc plain = loadScene(writeScene(
+      std::string("{") + kTwoBodies + R"(, "camera": {"eye": [1, 0, 1], "target": [0, 0, 0]}})"));
+  ASSERT_TRUE(plain.camera.has_value());
+  EXPECT_TRUE(test::near(plain.camera->fov_y, 35.0 * kPi / 180.0, 1e-15));
+}
+
+TEST(SceneParse, BadCamera) {
+  const std::string scene = std::string("{") + kTwoBodies + R"(, "camera": )";
+  EXPECT_EQ(loadError(scene + R"({"target": [0, 0, 0]}})"),
+            "FILE: /camera: missing key \"eye\" (an array of 3 numbers)");
+  EXPECT_EQ(loadError(scene + R"({"eye": [1, 1, 1], "target": [1, 1, 1]}})"),
+            "FILE: /camera/target: must differ from eye");
+  EXPECT_EQ(loadError(scene + R"({"eye": [1, 0, 0], "target": [0, 0, 0], "fov_deg": 180}})"),
+            "FILE: /camera/fov_deg: must be a number in (0, 180), got 180");
+  EXPECT_EQ(loadError(scene + R"({"eye": [1, 0, 0], "target": [0, 0, 0], "fov_deg": 0}})"),
+            "FILE: /camera/fov_deg: must be a number in (0, 180), got 0");
+  EXPECT_EQ(loadError(scene + R"({"eye": [1, 0, "x"], "target": [0, 0, 0]}})")
+                .rfind("FILE: /camera/eye/2: ", 0),
+            0u);
+  EXPECT_EQ(loadError(scene + R"({"eye": [1, 0, 0], "target": [0, 0, 0], "up": [0, 0, 1]}})")
+                .rfind("FILE: /camera/up: unknown key", 0),
+            0u);
+  EXPECT_EQ(loadError(scene + R"([1, 2]})").rfind("FILE: /camera: ", 0), 0u);
+}
+
 }  // namespace
 }  // namespace asperity

@@ -52,6 +52,7 @@ void expectSameBody(const BodyDesc& a, const BodyDesc& b) {
     EXPECT_EQ(s.surface.generator.params, t.surface.generator.params);
     EXPECT_EQ(s.surface.texture_rotation, t.surface.texture_rotation);
     EXPECT_EQ(s.surface.gain, t.surface.gain);
+    EXPECT_EQ(s.surface.base_color, t.surface.base_color);
   }
 }
 
@@ -111,6 +112,24 @@ TEST(SceneWrite, DegreesConvertBackExactly) {
     const double rad = scene::radiansFromDegrees(deg);
     EXPECT_EQ(scene::radiansFromDegrees(scene::degreesFromRadians(rad)), rad) << deg;
   }
+}
+
+TEST(SceneWrite, CameraAndColoursRoundTrip) {
+  const SceneDesc first = loadScene(test::sourcePath("scenes/examples/looks.json"));
+  const std::string copy = test::tempDir("looks") + "/looks.json";
+  saveScene(first, copy);
+  const SceneDesc second = loadScene(copy);
+  ASSERT_TRUE(second.camera.has_value());
+  EXPECT_EQ(second.camera->eye, first.camera->eye);
+  EXPECT_EQ(second.camera->target, first.camera->target);
+  EXPECT_EQ(second.camera->fov_y, first.camera->fov_y);  // bit for bit through degrees
+  EXPECT_NEAR(sceneToJson(second)["camera"]["fov_deg"].get<double>(), 30.0, 1e-9);
+  for (size_t i = 0; i < first.bodies.size(); ++i)
+    EXPECT_EQ(second.bodies[i].shapes[0].surface.base_color,
+              first.bodies[i].shapes[0].surface.base_color);
+  // A scene without a camera saves none.
+  EXPECT_FALSE(
+      sceneToJson(loadScene(test::sourcePath("scenes/examples/minimal.json"))).contains("camera"));
 }
 
 TEST(SceneWrite, UnwritableFile) {

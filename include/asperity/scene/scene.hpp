@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,14 @@ struct SceneMesh {
   int simplify = 0;    // target triangle count; 0 = keep every triangle
 };
 
+// The view a scene is best seen from ("camera" in the JSON): `asperity render` and
+// `asperity report` use it when no --camera is given. z is up.
+struct SceneCamera {
+  Vec3 eye = Vec3(1.2, -1.8, 1.0);    // m
+  Vec3 target = Vec3::Zero();         // m, differs from eye
+  double fov_y = 35.0 * kPi / 180.0;  // vertical field of view (rad), in (0, pi)
+};
+
 struct SceneDesc {
   WorldSettings settings;
   std::string sampler = "cone";  // friction provider (frictionProviderNames())
@@ -54,8 +63,9 @@ struct SceneDesc {
   std::vector<SceneSpring> springs;
   std::vector<SceneLoad> loads;
   std::vector<SceneMesh> meshes;
-  std::string source_file;  // the file it came from, for messages ("" = built in code)
-  std::string base_dir;     // folder that relative paths resolve against ("" = current)
+  std::optional<SceneCamera> camera;  // absent: front ends frame the bodies themselves
+  std::string source_file;            // the file it came from, for messages ("" = built in code)
+  std::string base_dir;               // folder that relative paths resolve against ("" = current)
 };
 
 // Reads and validates a scene file. Throws asperity::Error `file: /pointer: what` (or
