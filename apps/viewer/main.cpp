@@ -16,6 +16,9 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 16));
   app.add_option("--shadow-map", options.shadow_map, "Shadow map size (0 = no shadows)")
       ->check(CLI::Range(0, 8192));
+  app.add_option("--shadow-taps", options.shadow_taps,
+                 "Shadow filter taps, 1 or 4 (default: 4 on a GPU, 1 on llvmpipe)")
+      ->check(CLI::IsMember({1, 4}));
   app.add_option("--frames", options.frames, "Quit after N frames (prints the frame rate)")
       ->check(CLI::Range(1, 1000000));
   app.add_option("--screenshot", options.screenshot, "With --frames: PNG of the last frame");

@@ -64,6 +64,8 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options), playing_(optio
                                  std::strstr(gl_renderer, "softpipe") != nullptr);
   ro.samples = options.samples > 0 ? options.samples : (software ? 1 : 4);
   ro.shadow_map_size = options.shadow_map;
+  // One bilinear compare tap per pixel on software rasterisers (soft over a texel of the map).
+  ro.shadow_taps = options.shadow_taps > 0 ? options.shadow_taps : (software ? 1 : 4);
   renderer_ = std::make_unique<render::Renderer>(ro);
   // The "gl" patch sampler draws with the window's context (it restores the state it changes).
   registerFrictionProvider("gl", [] {

@@ -25,6 +25,7 @@ struct ViewerOptions {
   int height = 720;
   int samples = 0;         // MSAA; 0 = automatic: 4 on a GPU, 1 on a software rasteriser
   int shadow_map = 1024;   // shadow map texels per side (0 = no shadows)
+  int shadow_taps = 0;     // PCF taps, 1 or 4; 0 = automatic: 4 on a GPU, 1 on a software one
   int frames = 0;          // > 0: quit after this many frames (tests, measurements)
   std::string screenshot;  // with frames: PNG of the last frame
   bool play = true;        // start playing

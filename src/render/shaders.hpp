@@ -1,7 +1,7 @@
 // GLSL sources of the renderer (OpenGL 4.3 core). Shading is Blinn-Phong with a hemisphere
 // ambient term, one directional key light with a PCF shadow map, tangent-space normal mapping
 // in the physics' frame (texel x along T, y along B, z along N; SPEC 6), and an anti-aliased
-// grid on the ground.
+// grid shaded into the ground (no separate pass).
 #pragma once
 
 namespace asperity::render::shaders {
@@ -35,7 +35,11 @@ void main() {
 }
 )";
 
-inline constexpr const char* kMeshFragment = R"(#version 430 core
+// The fragment shader's body, without its #version line: the renderer compiles one variant per
+// combination of NORMAL_MAP, GROUND, SHADOWS and SHADOW_TAPS (1 or 4) by prepending #defines, so
+// that a software rasteriser, which runs both sides of a branch under a mask, never pays for a
+// texture fetch or a grid that the surface does not use.
+inline constexpr const char* kMeshFragmentBody = R"(
 in vec3 v_world;
 in vec3 v_normal;
 in vec3 v_tangent;
@@ -44,9 +48,6 @@ in vec2 v_uv;
 in vec4 v_light;
 uniform sampler2D u_normal_map;
 uniform sampler2DShadow u_shadow_map;
-uniform int u_has_normal_map;
-uniform int u_shadows;
-uniform int u_ground;
 uniform int u_highlight;
 uniform float u_shadow_texel;
 uniform float u_grid_step;
@@ -58,24 +59,30 @@ uniform vec3 u_eye;
 uniform vec3 u_horizon;
 out vec4 o_color;
 
-// Percentage-closer filter: 4 hardware-compared bilinear taps (each a 2 x 2 comparison) one
-// texel apart, a 3 x 3 footprint with soft edges at a cost a software rasteriser affords.
+// Percentage-closer filter with hardware comparison: each bilinear tap is a 2 x 2 comparison.
+// SHADOW_TAPS 4: four taps one texel apart (a 3 x 3 footprint); 1: one tap (a 2 x 2 footprint,
+// soft over a texel of the map).
 float shadowFactor(float ndl) {
-  if (u_shadows == 0) return 1.0;
+#if SHADOWS
   vec3 p = v_light.xyz / v_light.w * 0.5 + 0.5;
-  if (p.z >= 1.0) return 1.0;
   float z = p.z - mix(0.0025, 0.0008, clamp(ndl, 0.0, 1.0));
+#if SHADOW_TAPS == 4
   float d = u_shadow_texel;
-  return 0.25 * (texture(u_shadow_map, vec3(p.xy + vec2(-d, -d), z)) +
-                 texture(u_shadow_map, vec3(p.xy + vec2(d, -d), z)) +
-                 texture(u_shadow_map, vec3(p.xy + vec2(-d, d), z)) +
-                 texture(u_shadow_map, vec3(p.xy + vec2(d, d), z)));
+  float lit = 0.25 * (texture(u_shadow_map, vec3(p.xy + vec2(-d, -d), z)) +
+                      texture(u_shadow_map, vec3(p.xy + vec2(d, -d), z)) +
+                      texture(u_shadow_map, vec3(p.xy + vec2(-d, d), z)) +
+                      texture(u_shadow_map, vec3(p.xy + vec2(d, d), z)));
+#else
+  float lit = texture(u_shadow_map, vec3(p.xy, z));
+#endif
+  return p.z >= 1.0 ? 1.0 : lit;  // beyond the light's far plane: lit
+#else
+  return 1.0;
+#endif
 }
 
-// Anti-aliased lines every u_grid_step metres (and darker every 10) on the ground's x, y.
-float gridLines(vec2 xy, float step) {
-  vec2 g = xy / step;
-  vec2 w = fwidth(g);
+// Anti-aliased lines every `step` metres on the ground's x, y; both grids share one derivative.
+float gridLines(vec2 g, vec2 w) {
   vec2 d = abs(fract(g - 0.5) - 0.5) / max(w, vec2(1e-6));
   float line = 1.0 - min(min(d.x, d.y), 1.0);
   return line * clamp(1.0 - 3.0 * max(w.x, w.y), 0.0, 1.0);  // fade where lines crowd
@@ -85,12 +92,12 @@ void main() {
   // Geometric frame, then the meso normal from the normal map (SPEC 6).
   vec3 N = normalize(v_normal);
   vec3 n = N;
-  if (u_has_normal_map != 0) {
-    vec3 T = normalize(v_tangent);
-    vec3 B = normalize(v_bitangent);
-    vec3 m = texture(u_normal_map, v_uv).xyz * 2.0 - 1.0;  // stored as 0.5 m + 0.5
-    n = normalize(m.x * T + m.y * B + m.z * N);
-  }
+#if NORMAL_MAP
+  vec3 T = normalize(v_tangent);
+  vec3 B = normalize(v_bitangent);
+  vec3 m = texture(u_normal_map, v_uv).xyz * 2.0 - 1.0;  // stored as 0.5 m + 0.5
+  n = normalize(m.x * T + m.y * B + m.z * N);
+#endif
   vec3 L = normalize(u_light_dir);
   vec3 V = normalize(u_eye - v_world);
   vec3 H = normalize(L + V);
@@ -98,12 +105,14 @@ void main() {
   float facing = step(0.0, dot(N, L));  // no light through the macro surface
   float s = shadowFactor(dot(N, L)) * facing;
 
-  // Key light (Blinn-Phong) plus a sky/ground hemisphere ambient.
+  // Key light (Blinn-Phong) plus a sky/ground hemisphere ambient; the ground's grid darkens
+  // its albedo (lines every u_grid_step, darker every 10).
   vec3 albedo = u_base_color;
-  if (u_ground != 0) {
-    albedo *= 1.0 - 0.35 * gridLines(v_world.xy, u_grid_step) -
-              0.25 * gridLines(v_world.xy, 10.0 * u_grid_step);
-  }
+#if GROUND
+  vec2 g = v_world.xy / u_grid_step;
+  vec2 w = fwidth(g);
+  albedo *= 1.0 - 0.35 * gridLines(g, w) - 0.25 * gridLines(0.1 * g, 0.1 * w);
+#endif
   vec3 ambient = mix(vec3(0.30, 0.28, 0.26), vec3(0.55, 0.60, 0.70), n.z * 0.5 + 0.5);
   float spec = pow(max(dot(n, H), 0.0), 48.0) * 0.25;
   vec3 color = albedo * (0.45 * ambient + 0.85 * ndl * s * vec3(1.0, 0.97, 0.92)) + spec * s;
@@ -113,9 +122,11 @@ void main() {
 
   // Gamma, then fog towards the horizon colour on far ground.
   color = pow(clamp(color, 0.0, 1.0), vec3(1.0 / 2.2));
-  float distance_to_eye = length(u_eye - v_world);
-  float fog = u_ground != 0 ? smoothstep(u_fog_start, u_fog_end, distance_to_eye) : 0.0;
-  o_color = vec4(mix(color, u_horizon, fog), 1.0);
+#if GROUND
+  float fog = smoothstep(u_fog_start, u_fog_end, length(u_eye - v_world));
+  color = mix(color, u_horizon, fog);
+#endif
+  o_color = vec4(color, 1.0);
 }
 )";
 

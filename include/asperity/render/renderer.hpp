@@ -19,6 +19,7 @@ struct RendererOptions {
   int height = 720;
   int samples = 4;             // MSAA samples (clamped to GL_MAX_SAMPLES; 1 = off)
   int shadow_map_size = 2048;  // texels per side; 0 = no shadows
+  int shadow_taps = 4;         // PCF: 4 bilinear compare taps (3x3 texels) or 1 (2x2, cheaper)
   bool normal_maps = true;     // false: flat shading (the macro normal only)
   bool debug_on_top = true;    // debug layers ignore depth (contacts hide under bodies)
   double grid_step = 0.1;      // m between ground grid lines (every 10th darker)
