@@ -8,8 +8,9 @@
 // contact slides, the update is redone with the isotropic step 1 / k_max so the friction
 // opposes the slip), and its split-impulse position row.
 // Position errors of contacts are removed by split impulses: pseudo-velocities that move the
-// bodies but are forgotten after the step, so stabilisation adds no kinetic energy. Joints use
-// Baumgarte velocity bias. Cost per iteration is linear in the number of rows; nothing is
+// bodies but are forgotten after the step, so stabilisation adds no kinetic energy. Ball joints
+// remove drift the same way; hinge, fixed and distance rows use a Baumgarte velocity bias.
+// Cost per iteration is linear in the number of rows; nothing is
 // allocated in the iteration loop; the projection is picked once per solve, not per row.
 #pragma once
 
