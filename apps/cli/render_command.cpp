@@ -95,17 +95,6 @@ void showProgress(int done, int total) {
 }
 
 // The scene's own "camera", with clip planes that follow its distance like --camera's.
-render::Camera sceneCamera(const SceneCamera& sc) {
-  render::Camera c;
-  c.eye = sc.eye;
-  c.target = sc.target;
-  c.fov_y = sc.fov_y;
-  const double distance = (c.eye - c.target).norm();
-  c.near_plane = std::max(1e-3, distance * 0.02);
-  c.far_plane = distance * 20.0 + 50.0;
-  return c;
-}
-
 // Steps until the world's time reaches t (to the nearest step).
 void advanceTo(World& world, double t) {
   const double dt = world.settings().dt;
@@ -149,9 +138,10 @@ void runRender(const RenderCommandOptions& o) {
   render::Renderer renderer(ro);
   render::WorldView view;
   // --camera, else the scene's camera, else one framing the bodies.
-  const render::Camera cam = !o.camera.empty() ? user_camera
-                             : scene.camera    ? sceneCamera(*scene.camera)
-                                               : view.defaultCamera(*world, double(width) / height);
+  const render::Camera cam =
+      !o.camera.empty() ? user_camera
+      : scene.camera ? render::lookAt(scene.camera->eye, scene.camera->target, scene.camera->fov_y)
+                     : view.defaultCamera(*world, double(width) / height);
   render::RenderScene frame_scene;
   auto renderAt = [&](double t) {
     advanceTo(*world, t);

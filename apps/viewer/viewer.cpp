@@ -107,7 +107,10 @@ void Viewer::loadScene(const std::string& path) {
   view_ = render::WorldView();
   int w = 0, h = 0;
   glfwGetFramebufferSize(window_, &w, &h);
-  camera_ = view_.defaultCamera(*world_, h > 0 ? double(w) / h : 16.0 / 9.0);
+  // The scene's own view when it has one, else one framing the bodies.
+  const std::optional<SceneCamera>& view = scene_.camera;
+  camera_ = view ? render::lookAt(view->eye, view->target, view->fov_y)
+                 : view_.defaultCamera(*world_, h > 0 ? double(w) / h : 16.0 / 9.0);
   spring_ = -1;
   dragged_ = kNoBody;
   accumulator_ = 0.0;

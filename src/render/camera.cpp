@@ -134,12 +134,18 @@ Camera parseCamera(const std::string& text, const char* what) {
     throw Error(std::string(what) +
                 ": expected eye_x,eye_y,eye_z,target_x,target_y,target_z (6 numbers), got " +
                 std::to_string(values.size()));
+  const Vec3 eye(values[0], values[1], values[2]);
+  const Vec3 target(values[3], values[4], values[5]);
+  if ((eye - target).norm() < 1e-9) throw Error(std::string(what) + ": eye and target coincide");
+  return lookAt(eye, target);
+}
+
+Camera lookAt(const Vec3& eye, const Vec3& target, double fov_y) {
   Camera c;
-  c.eye = Vec3(values[0], values[1], values[2]);
-  c.target = Vec3(values[3], values[4], values[5]);
-  if ((c.eye - c.target).norm() < 1e-9)
-    throw Error(std::string(what) + ": eye and target coincide");
-  const double distance = (c.eye - c.target).norm();
+  c.eye = eye;
+  c.target = target;
+  c.fov_y = fov_y;
+  const double distance = (eye - target).norm();
   c.near_plane = std::max(1e-3, distance * 0.02);
   c.far_plane = distance * 20.0 + 50.0;
   return c;

@@ -41,6 +41,10 @@ struct Camera {
 // the scene's size (`scene_radius`: half the size of everything to show, ground included).
 Camera frameBox(const Box3& box, double aspect, double scene_radius = 0.0);
 
+// A camera at `eye` looking at `target` (they differ) with this vertical field of view; near
+// and far planes follow the distance between them (a scene's "camera", --camera).
+Camera lookAt(const Vec3& eye, const Vec3& target, double fov_y = 35.0 * kPi / 180.0);
+
 // Parses "eye_x,eye_y,eye_z,target_x,target_y,target_z"; throws asperity::Error naming the
 // option (`what`) when it is not six finite numbers or eye equals target.
 Camera parseCamera(const std::string& text, const char* what = "--camera");
