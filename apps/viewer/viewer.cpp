@@ -108,9 +108,10 @@ void Viewer::loadScene(const std::string& path) {
   int w = 0, h = 0;
   glfwGetFramebufferSize(window_, &w, &h);
   // The scene's own view when it has one, else one framing the bodies.
-  const std::optional<SceneCamera>& view = scene_.camera;
-  camera_ = view ? render::lookAt(view->eye, view->target, view->fov_y)
-                 : view_.defaultCamera(*world_, h > 0 ? double(w) / h : 16.0 / 9.0);
+  const std::optional<SceneCamera>& scene_camera = scene_.camera;
+  camera_ = scene_camera
+                ? render::lookAt(scene_camera->eye, scene_camera->target, scene_camera->fov_y)
+                : view_.defaultCamera(*world_, h > 0 ? double(w) / h : 16.0 / 9.0);
   spring_ = -1;
   dragged_ = kNoBody;
   accumulator_ = 0.0;

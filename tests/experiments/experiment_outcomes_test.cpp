@@ -6,12 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 #include <string>
+#include <vector>
 
 #include "asperity/error.hpp"
 #include "asperity/scene/scene.hpp"
-#include "asperity/world/world.hpp"
 #include "support/test_support.hpp"
 
 namespace asperity::experiments {
@@ -164,12 +163,9 @@ TEST(ChainBolas, DISABLED_WrapsTheRoughRodSlipsOffTheSmoothOne) {
 // 1.44:1 (weights 1.4 and 0.87 kg). The rough rod's sampled mu (about 0.3) holds it, the smooth
 // rod's (about 0.13) lets the heavy side run to the ground. docs/experiments.md has the margins.
 double heavyBallDrop(const std::string& scene_file, double seconds) {
-  std::unique_ptr<World> world = instantiate(loadScene(test::sourcePath("scenes/" + scene_file)));
-  const BodyId heavy = world->findBody("ball_0");
-  const double z0 = world->body(heavy).pose.position.z();
-  const int steps = static_cast<int>(std::lround(seconds / world->settings().dt));
-  for (int i = 0; i < steps; ++i) world->step();
-  return z0 - world->body(heavy).pose.position.z();
+  const Recording rec = simulate(scene_file, seconds, options(), {"ball_0"});
+  const std::vector<Transform>& heavy = rec.of("ball_0");
+  return heavy.front().position.z() - heavy.back().position.z();
 }
 
 TEST(ChainBolas, DrapedChainHoldsOnTheRoughRodRunsOffTheSmoothOne) {
