@@ -88,9 +88,11 @@ void appendRows(std::string& text, const World& world, int64_t step) {
   }
 }
 
-// Sums of StepProfile fields over the run, for --stats.
+// Sums of StepProfile fields over the run, for --stats. Contact counts are summed in doubles:
+// an int sum overflows after a million steps of a few thousand contacts.
 struct ProfileSums {
-  StepProfile sum;
+  StepProfile sum;  // stage times only; its contacts and fallbacks stay 0
+  double contacts = 0.0, fallbacks = 0.0;
   int max_contacts = 0;
   void add(const StepProfile& p) {
     sum.drivers_ms += p.drivers_ms;
@@ -102,8 +104,8 @@ struct ProfileSums {
     sum.solve_ms += p.solve_ms;
     sum.integrate_ms += p.integrate_ms;
     sum.total_ms += p.total_ms;
-    sum.contacts += p.contacts;
-    sum.fallbacks += p.fallbacks;
+    contacts += p.contacts;
+    fallbacks += p.fallbacks;
     max_contacts = std::max(max_contacts, p.contacts);
   }
 };
@@ -121,7 +123,7 @@ nlohmann::ordered_json statsJson(const RunOptions& opt, const SceneDesc& scene, 
   j["bodies"] = world.bodies().size();
   j["sampler"] = scene.sampler;
   // Per-step averages (ms for the stages, as StepProfile).
-  j["per_step"] = {{"contacts", s.contacts / n},     {"fallbacks", s.fallbacks / n},
+  j["per_step"] = {{"contacts", sums.contacts / n},  {"fallbacks", sums.fallbacks / n},
                    {"drivers_ms", s.drivers_ms / n}, {"collide_ms", s.collide_ms / n},
                    {"frames_ms", s.frames_ms / n},   {"friction_ms", s.friction_ms / n},
                    {"patch_ms", s.patch_ms / n},     {"averaging_ms", s.averaging_ms / n},
