@@ -14,70 +14,12 @@
 #include "asperity/error.hpp"
 #include "asperity/geometry/mesh_io.hpp"
 #include "asperity/sampler/cpu_patch_sampler.hpp"
-#include "asperity/texture/generators.hpp"
+#include "sampler_bench_scene.hpp"
 
 namespace asperity {
 namespace {
 
-std::shared_ptr<const NormalMap> material(const std::string& name) {
-  GeneratorSpec spec;
-  spec.name = name;
-  spec.size = 256;
-  return std::make_shared<NormalMap>(generateNormalMap(spec));
-}
-
-Body plane() {
-  Body b;
-  b.type = BodyType::Static;
-  Shape s;
-  s.type = ShapeType::Plane;
-  s.surface.normal_map = material("stone");
-  s.surface.texture_size = 0.25;
-  s.surface.gain = 2.0;
-  b.shapes.push_back(s);
-  return b;
-}
-
-// `count` contacts: boxes of 0.2 m in a row, four corner contacts each (phi = 0.1 mm).
-struct Scene {
-  std::vector<Body> bodies;
-  std::vector<Contact> contacts;
-};
-
-Scene boxesOnPlane(int count) {
-  Scene scene;
-  scene.bodies.push_back(plane());
-  const auto oak = material("oak");
-  const int boxes = (count + 3) / 4;
-  for (int i = 0; i < boxes; ++i) {
-    Body b;
-    b.pose.position = Vec3(0.3 * (i % 100), 0.3 * (i / 100), 0.1 - 1e-4);
-    b.pose.rotation = Quat(Eigen::AngleAxisd(0.1 * i, Vec3::UnitZ()));
-    Shape s;
-    s.type = ShapeType::Box;
-    s.half_extents = Vec3(0.1, 0.1, 0.1);
-    s.surface.normal_map = oak;
-    s.surface.gain = 2.0;
-    b.shapes.push_back(s);
-    scene.bodies.push_back(b);
-    for (int k = 0; k < 4 && static_cast<int>(scene.contacts.size()) < count; ++k) {
-      Contact c;
-      c.body_a = static_cast<BodyId>(i + 1);
-      c.body_b = 0;
-      c.shape_a = c.shape_b = 0;
-      const Vec3 corner(k & 1 ? 0.1 : -0.1, k & 2 ? 0.1 : -0.1, -0.1);
-      c.point = b.pose.apply(corner) + Vec3(0, 0, 0.5e-4);
-      c.phi = 1e-4;
-      c.normal = Vec3::UnitZ();
-      c.t = Vec3::UnitX();
-      c.b = Vec3::UnitY();
-      scene.contacts.push_back(c);
-    }
-  }
-  return scene;
-}
-
-void run(benchmark::State& state, Scene& scene, int n) {
+void run(benchmark::State& state, bench::SamplerScene& scene, int n) {
   CpuPatchSampler sampler;
   FrictionSettings settings;
   settings.directions = n;
@@ -97,7 +39,7 @@ void run(benchmark::State& state, Scene& scene, int n) {
 }
 
 void BM_BoxOnPlane(benchmark::State& state) {
-  Scene scene = boxesOnPlane(static_cast<int>(state.range(1)));
+  bench::SamplerScene scene = bench::boxesOnPlane(static_cast<int>(state.range(1)));
   run(state, scene, static_cast<int>(state.range(0)));
 }
 BENCHMARK(BM_BoxOnPlane)
@@ -125,13 +67,13 @@ void BM_BunnyOnPlane(benchmark::State& state) {
     state.SkipWithError(e.what());
     return;
   }
-  Scene scene;
-  scene.bodies.push_back(plane());
+  bench::SamplerScene scene;
+  scene.bodies.push_back(bench::texturedPlane());
   Body bunny;
   Shape s;
   s.type = ShapeType::TriangleMesh;
   s.mesh = mesh;
-  s.surface.normal_map = material("plastic");
+  s.surface.normal_map = bench::material("plastic");
   bunny.shapes.push_back(s);
   // The OBJ is y-up: turned +90 degrees about x (as the scenes' euler_deg [90, 0, 0]), then
   // sunk 1 mm into the plane; a contact at each of the 16 lowest vertices (phi = its depth,

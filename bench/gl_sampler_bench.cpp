@@ -9,62 +9,13 @@
 #include <vector>
 
 #include "asperity/sampler/gl_patch_sampler.hpp"
-#include "asperity/texture/generators.hpp"
+#include "sampler_bench_scene.hpp"
 
 namespace asperity {
 namespace {
 
-std::shared_ptr<const NormalMap> material(const std::string& name) {
-  GeneratorSpec spec;
-  spec.name = name;
-  spec.size = 256;
-  return std::make_shared<NormalMap>(generateNormalMap(spec));
-}
-
-struct Scene {
-  std::vector<Body> bodies;
-  std::vector<Contact> contacts;
-};
-
-// A textured plane and `count` contacts at the corners of 0.2 m boxes (phi = 0.1 mm).
-Scene boxesOnPlane(int count) {
-  Scene scene;
-  Body plane;
-  plane.type = BodyType::Static;
-  Shape ground;
-  ground.type = ShapeType::Plane;
-  ground.surface.normal_map = material("stone");
-  ground.surface.gain = 2.0;
-  plane.shapes.push_back(ground);
-  scene.bodies.push_back(plane);
-  const auto oak = material("oak");
-  for (int i = 0; i < (count + 3) / 4; ++i) {
-    Body b;
-    b.pose.position = Vec3(0.3 * (i % 100), 0.3 * (i / 100), 0.1 - 1e-4);
-    b.pose.rotation = Quat(Eigen::AngleAxisd(0.1 * i, Vec3::UnitZ()));
-    Shape s;
-    s.type = ShapeType::Box;
-    s.half_extents = Vec3(0.1, 0.1, 0.1);
-    s.surface.normal_map = oak;
-    s.surface.gain = 2.0;
-    b.shapes.push_back(s);
-    scene.bodies.push_back(b);
-    for (int k = 0; k < 4 && static_cast<int>(scene.contacts.size()) < count; ++k) {
-      Contact c;
-      c.body_a = static_cast<BodyId>(i + 1);
-      c.body_b = 0;
-      c.shape_a = c.shape_b = 0;
-      c.point =
-          b.pose.apply(Vec3(k & 1 ? 0.1 : -0.1, k & 2 ? 0.1 : -0.1, -0.1)) + Vec3(0, 0, 0.5e-4);
-      c.phi = 1e-4;
-      scene.contacts.push_back(c);
-    }
-  }
-  return scene;
-}
-
 void BM_GlBoxOnPlane(benchmark::State& state) {
-  Scene scene = boxesOnPlane(static_cast<int>(state.range(1)));
+  bench::SamplerScene scene = bench::boxesOnPlane(static_cast<int>(state.range(1)));
   GlPatchSampler sampler;
   FrictionSettings settings;
   settings.directions = static_cast<int>(state.range(0));
