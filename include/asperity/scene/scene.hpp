@@ -48,7 +48,7 @@ struct SceneMesh {
 };
 
 // The view a scene is best seen from ("camera" in the JSON): `asperity render` and
-// `asperity report` use it when no --camera is given. z is up.
+// `asperity report` use it when no --camera is given, `asperity-viewer` opens with it. z is up.
 struct SceneCamera {
   Vec3 eye = Vec3(1.2, -1.8, 1.0);    // m
   Vec3 target = Vec3::Zero();         // m, differs from eye
