@@ -1,12 +1,21 @@
 # The two commands of the README:
 #   make demo   installs missing Debian packages, builds (Release) into build/, runs the main job
 #   make test   installs missing Debian packages, builds, runs the whole test suite through CTest
+# Reliability (docs/reliability.md):
+#   make sanitize  the whole test suite built with ASan + UBSan (build-sanitize/)
+#   make fuzz      every libFuzzer target for FUZZ_SECONDS each (clang, build-fuzz/)
+#   make soak      every experiment scene for SOAK_SECONDS simulated (default 600)
 BUILD ?= build
 JOBS ?= $(shell nproc)
 OUT ?= out
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release -DASPERITY_WERROR=ON
 
-.PHONY: all deps configure build demo test bench format clean
+SANITIZE_BUILD ?= build-sanitize
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 60
+SOAK_SECONDS ?= 600
+
+.PHONY: all deps configure build demo test bench format clean sanitize fuzz soak
 
 all: build
 
@@ -24,6 +33,28 @@ demo: build
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 600
+
+# Sanitizer reports abort the test that made them; Mesa's own leaks are suppressed by name.
+sanitize: deps
+	@cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DASPERITY_WERROR=ON \
+	  -DASPERITY_SANITIZE=address,undefined -DASPERITY_BUILD_BENCH=OFF >/dev/null
+	@cmake --build $(SANITIZE_BUILD) -j$(JOBS)
+	@cd $(SANITIZE_BUILD) && \
+	  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizer/lsan.supp:print_suppressions=0 \
+	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+	  ctest --output-on-failure -j$(JOBS) --timeout 1200
+
+fuzz: deps
+	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=clang \
+	  -DCMAKE_CXX_COMPILER=clang++ -DASPERITY_FUZZ=ON -DASPERITY_WITH_GL=OFF \
+	  -DASPERITY_BUILD_TESTS=OFF -DASPERITY_BUILD_BENCH=OFF >/dev/null
+	@cmake --build $(FUZZ_BUILD) -j$(JOBS) --target asperity_fuzzers
+	@tests/fuzz/run.sh $(FUZZ_BUILD)/bin $(FUZZ_SECONDS)
+
+soak: build
+	@cd $(BUILD) && ASPERITY_SOAK_SECONDS=$(SOAK_SECONDS) ctest --output-on-failure -j$(JOBS) \
+	  -R '^Soak\.' --timeout 0
 
 bench: build
 	@for b in $(BUILD)/bin/asperity_*_bench; do echo "== $$b"; $$b; done

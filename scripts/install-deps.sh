@@ -18,6 +18,8 @@ packages=(
   xvfb xauth ffmpeg
   # meshes used by scenes (the Stanford bunny)
   glmark2-data
+  # reliability: libFuzzer targets and sanitizer builds (make fuzz, make sanitize)
+  clang libfuzzer-14-dev
 )
 
 missing=()

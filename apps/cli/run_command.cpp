@@ -17,6 +17,7 @@
 #include "asperity/error.hpp"
 #include "asperity/scene/friction_registry.hpp"
 #include "asperity/scene/scene.hpp"
+#include "asperity/world/state_check.hpp"
 #include "cli_common.hpp"
 #ifdef ASPERITY_HAVE_GL
 #include "asperity/sampler/gl_patch_sampler.hpp"
@@ -213,6 +214,9 @@ void writeFile(const std::string& path, const std::string& text, const char* wha
 void runScene(const RunOptions& opt) {
   const SceneDesc scene = loadWithOverrides(opt);
   std::unique_ptr<World> world = instantiate(scene);
+  // Parameters that cannot be simulated stably are named before the run (it may still work).
+  for (const std::string& warning : stabilityWarnings(*world))
+    std::fprintf(stderr, "asperity: warning: %s: %s\n", opt.scene.c_str(), warning.c_str());
   const int64_t steps = stepCount(opt, scene.settings.dt);
   // Step 0 is the initial state; then every K steps.
   std::string csv = "step,time,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n";

@@ -142,11 +142,18 @@ std::string formatNumber(double x) {
 nlohmann::json parseJsonText(const std::string& text, const std::string& file) {
   try {
     DuplicateKeyCheck check(file);
-    return nlohmann::json::parse(
-        text, [&check](int depth, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-          if (event == nlohmann::json::parse_event_t::key) check.key(parsed.get<std::string>());
-          return check(depth, event, parsed);
-        });
+    return nlohmann::json::parse(text, [&](int depth, nlohmann::json::parse_event_t event,
+                                           nlohmann::json& parsed) {
+      using Event = nlohmann::json::parse_event_t;
+      if (event == Event::key) check.key(parsed.get<std::string>());
+      // A container opened at `depth` nests depth + 1 deep; deeper documents are refused
+      // before they are built (recursive walks over them would overflow the stack).
+      if ((event == Event::object_start || event == Event::array_start) &&
+          depth + 1 > kMaxJsonDepth)
+        throw Error(file + ": JSON nested " + std::to_string(depth + 1) +
+                    " levels deep, more than the " + std::to_string(kMaxJsonDepth) + " allowed");
+      return check(depth, event, parsed);
+    });
   } catch (const nlohmann::json::parse_error& e) {
     // Keep nlohmann's explanation, drop its "[json.exception...] parse error at ..." prefix.
     std::string what = e.what();

@@ -41,7 +41,11 @@ struct Range {
 // Shortest text that reads back to the same double ("0.1", "-3", "1e+300").
 std::string formatNumber(double x);
 
+// Deepest nesting of arrays and objects that parseJsonText accepts (scenes need about 6).
+inline constexpr int kMaxJsonDepth = 64;
+
 // Parses JSON text; a syntax error becomes `file:line:column: what` (1-based line and column).
+// Nesting deeper than kMaxJsonDepth is an error naming the depth, not a stack overflow.
 nlohmann::json parseJsonText(const std::string& text, const std::string& file);
 // Reads and parses a file; throws asperity::Error naming it when it cannot be read.
 nlohmann::json parseJsonFile(const std::string& path);

@@ -61,6 +61,7 @@ void parseSettings(JsonReader r, SceneDesc& scene) {
   s.contact_margin = r.number("contact_margin", s.contact_margin, Range::nonNegative(kHuge));
   s.max_correction_speed =
       r.number("max_correction_speed", s.max_correction_speed, Range::nonNegative(kHuge));
+  s.max_speed = r.number("max_speed", s.max_speed, Range::nonNegative(kHuge));
   // SPEC 3: N, mu0, mu_max, w, R.
   FrictionSettings& f = s.friction;
   f.directions = r.integer("directions", f.directions, 4, 64);

@@ -140,6 +140,7 @@ json settingsToJson(const SceneDesc& scene) {
           {"linear_slop", s.linear_slop},
           {"contact_margin", s.contact_margin},
           {"max_correction_speed", s.max_correction_speed},
+          {"max_speed", s.max_speed},
           {"directions", f.directions},
           {"mu0", f.mu0},
           {"mu_max", static_cast<double>(f.mu_max)},

@@ -12,6 +12,7 @@
 #include "asperity/error.hpp"
 #include "asperity/sampler/constant_provider.hpp"
 #include "asperity/solver/contact_solver.hpp"
+#include "asperity/world/state_check.hpp"
 
 namespace asperity {
 
@@ -71,6 +72,8 @@ void World::step() {
   p.fallbacks = static_cast<int>(std::count_if(contacts_.begin(), contacts_.end(),
                                                [](const Contact& c) { return c.fallback; }));
   profile_ = p;
+  // 8. No silent NaN or explosion: an unusable state stops the run here.
+  checkWorldState(*this, steps_);
 }
 
 BodyId World::createBody(const BodyDesc& desc) {

@@ -41,6 +41,21 @@ TEST(JsonReader, TruncatedDocument) {
   EXPECT_EQ(message.rfind("z.json:2:", 0), 0u) << message;
 }
 
+TEST(JsonReader, DeepNestingIsRefusedWithTheDepth) {
+  // 100 000 nested arrays once overflowed the stack; now the 65th level is refused by name.
+  const std::string deep = std::string(100000, '[') + std::string(100000, ']');
+  EXPECT_EQ(errorOf([&] { parseJsonText(deep, "x.json"); }),
+            "x.json: JSON nested 65 levels deep, more than the 64 allowed");
+  // Objects count the same way, and exactly the limit still parses.
+  std::string objects;
+  for (int i = 0; i < 100; ++i) objects += "{\"a\":";
+  objects += "1" + std::string(100, '}');
+  EXPECT_EQ(errorOf([&] { parseJsonText(objects, "y.json"); }),
+            "y.json: JSON nested 65 levels deep, more than the 64 allowed");
+  const std::string limit = std::string(kMaxJsonDepth, '[') + std::string(kMaxJsonDepth, ']');
+  EXPECT_EQ(errorOf([&] { parseJsonText(limit, "z.json"); }), "");
+}
+
 TEST(JsonReader, DuplicateKeysAreErrors) {
   EXPECT_EQ(errorOf([] { parseJsonText(R"({"a": 1, "a": 2})", "d.json"); }),
             "d.json: /a: duplicate key");

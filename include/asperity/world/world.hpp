@@ -50,6 +50,9 @@ struct WorldSettings {
   double linear_slop = 0.0;           // m of penetration left alone; 0 = automatic from body sizes
   double contact_margin = 0.0;        // m, handed to collision; 0 = automatic
   double max_correction_speed = 2.0;  // m/s, cap of the position-correction velocity
+  // m/s; World::step throws StepError when a dynamic body is faster (0 = no limit). Far above
+  // anything the scenes do, it catches explosions before they turn into NaN.
+  double max_speed = 1000.0;
 };
 
 // Wall-clock time of each stage of the last step (ms), and what it saw.
@@ -93,7 +96,10 @@ class World {
   FrictionProvider& frictionProvider() { return *provider_; }
   void setFrameCallback(FrameCallback callback) { frame_callback_ = std::move(callback); }
 
-  // Advances the world by settings().dt.
+  // Advances the world by settings().dt. Then checks the state (world/state_check.hpp): a
+  // non-finite pose or velocity, or a dynamic body faster than settings().max_speed, throws
+  // StepError (an asperity::Error naming the body, the step and the likely cause); the world
+  // is then left as that step made it.
   void step();
 
   double time() const { return time_; }
