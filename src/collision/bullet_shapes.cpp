@@ -5,6 +5,7 @@
 #include <LinearMath/btConvexHullComputer.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "asperity/error.hpp"
@@ -116,6 +117,30 @@ Shape scaledShape(const Shape& shape, double scale) {
 
 btTransform toBt(const Transform& t, double scale) {
   return toBt(Transform{t.position * scale, t.rotation});
+}
+
+double boundingRadius(const Shape& shape) {
+  switch (shape.type) {
+    case ShapeType::Box:
+      return shape.half_extents.norm();
+    case ShapeType::Sphere:
+      return shape.radius;
+    case ShapeType::Capsule:
+      return shape.radius + shape.half_height;
+    case ShapeType::Cylinder:
+      return std::hypot(shape.radius, shape.half_height);
+    case ShapeType::Plane:
+      return 0.0;
+    case ShapeType::ConvexHull:
+    case ShapeType::TriangleMesh: {
+      // The farthest vertex from the shape's origin.
+      double r2 = 0.0;
+      if (shape.mesh)
+        for (const Vec3& v : shape.mesh->vertices) r2 = std::max(r2, v.squaredNorm());
+      return std::sqrt(r2);
+    }
+  }
+  return 0.0;
 }
 
 double shapeSize(const Shape& shape) {

@@ -34,6 +34,9 @@ btTransform toBt(const Transform& t, double scale);
 
 // The smallest extent of a shape (m): the size its margin and thresholds follow.
 double shapeSize(const Shape& shape);
+// Radius of the smallest sphere about the shape's frame origin holding the shape (m; 0 for a
+// plane): how far a point of it can be from the origin the shape turns about.
+double boundingRadius(const Shape& shape);
 // Bullet's collision margin for a shape of this size: min(0.04, 0.02 * size) (m).
 double marginFor(double size);
 

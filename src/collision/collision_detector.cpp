@@ -102,7 +102,8 @@ struct CollisionDetector::Impl {
   };
 
   CollisionSettings settings;
-  double scale = 1.0;  // Bullet's units per metre (bulletScale)
+  double speculative_time = 0.0;  // s, setSpeculativeTime
+  double scale = 1.0;             // Bullet's units per metre (bulletScale)
   std::vector<ShapeRecord> records;
   std::vector<BodyType> body_types;
   std::set<std::pair<BodyId, BodyId>> ignored;
@@ -268,6 +269,8 @@ void CollisionDetector::Impl::addBody(BodyId id, const Body& body) {
     rec.index = static_cast<int>(s);
     rec.body_type = body.type;
     rec.shape = body.shapes[s];
+    rec.bounding_radius = boundingRadius(rec.shape);
+    rec.size = shapeSize(rec.shape);
     rec.bullet = makeBulletShape(scaledShape(rec.shape, scale), body.type);
     // Closed meshes may take the signed-distance path (sdf_pairs).
     rec.closed_mesh = rec.shape.type == ShapeType::TriangleMesh && isClosedMesh(*rec.shape.mesh);
@@ -361,7 +364,13 @@ void CollisionDetector::Impl::collectPlane(int r0, int r1) {
   const ShapeRecord& rb = records[static_cast<size_t>(plane_first ? r0 : r1)];
   if (ra.shape.type == ShapeType::Plane) return;  // two planes never touch
   const WorldPlane plane = worldPlane(rb.shape, rb.world);
-  const double reach = settings.report_gaps ? gapReach(ra) : 0.0;
+  double reach = settings.report_gaps ? gapReach(ra) : 0.0;
+  // A fast shape: speculative contacts as far as it can close toward the plane this step, so
+  // the solver stops it at the surface instead of a step beyond it (docs/collision.md).
+  const double sweep =
+      speculative_time * (std::max(0.0, (rb.velocity - ra.velocity).dot(plane.normal)) +
+                          ra.angular_speed * ra.bounding_radius);
+  if (sweep > 0.25 * ra.size) reach = std::max(reach, sweep);
   for (const PlanePoint& p : planePoints(ra.shape, ra.world, plane, reach)) {
     Contact c;
     c.body_a = ra.body, c.body_b = rb.body;
@@ -435,8 +444,11 @@ void CollisionDetector::Impl::collect(std::span<const Body> bodies) {
   }
   // Poses of this call, in double for the contact geometry and in float for Bullet.
   for (ShapeRecord& rec : records) {
-    rec.world = bodies[rec.body].pose * rec.shape.local;
+    const Body& body = bodies[rec.body];
+    rec.world = body.pose * rec.shape.local;
     rec.object->setWorldTransform(toBt(rec.world, scale));
+    rec.velocity = body.pointVelocity(rec.world.position);
+    rec.angular_speed = body.angular_velocity.norm();
   }
   contacts.clear();
   plane_pairs.clear();
@@ -460,6 +472,10 @@ void CollisionDetector::detect(std::span<const Body> bodies, std::vector<Contact
   // Straight into the caller's vector: one pass over the contacts fewer than copying them.
   impl_->collect(bodies);
   impl_->sortInto(out);
+}
+
+void CollisionDetector::setSpeculativeTime(double seconds) {
+  impl_->speculative_time = seconds > 0.0 ? seconds : 0.0;
 }
 
 void CollisionDetector::ignorePair(BodyId a, BodyId b) {

@@ -21,6 +21,10 @@ struct ShapeRecord {
   bool closed_mesh = false;       // a TriangleMesh bounding a volume (signed distance path)
   std::vector<Vec4> hull_planes;  // outward unit normal and offset per face (hull shapes)
   Transform world;                // shape frame in world, this call
+  double bounding_radius = 0.0;   // boundingRadius(shape) (m)
+  double size = 0.0;              // shapeSize(shape) (m)
+  Vec3 velocity = Vec3::Zero();   // of the shape frame's origin, this call (m/s)
+  double angular_speed = 0.0;     // |w| of the body, this call (rad/s)
 };
 
 // SPEC 1 and collision_detector.hpp: the dynamic body is A against a static or kinematic one,

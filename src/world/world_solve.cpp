@@ -55,6 +55,7 @@ void World::collide() {
     slop_ = automaticSlop();
     bodies_changed_ = false;
   }
+  collision_->setSpeculativeTime(settings_.dt);
   collision_->detect(bodies_, contacts_);
 }
 

@@ -77,6 +77,10 @@ class CollisionDetector {
   void detect(std::span<const Body> bodies, std::vector<Contact>& out);
   // Bodies joined by a joint may be excluded from colliding with each other.
   void ignorePair(BodyId a, BodyId b);
+  // Time to the next detect (s; the world's dt). A shape that can close more than a quarter of
+  // its size toward a plane in that time gets speculative plane contacts (phi < 0) up to that
+  // distance, so it cannot pass through the plane in one step; 0 (default) = none.
+  void setSpeculativeTime(double seconds);
 
  private:
   struct Impl;
