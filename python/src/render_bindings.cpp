@@ -41,8 +41,11 @@ py::array_t<uint8_t> renderWorld(const PyWorld& w, int width, int height, const 
       cam = w.scene.camera
                 ? render::lookAt(w.scene.camera->eye, w.scene.camera->target, w.scene.camera->fov_y)
                 : view.defaultCamera(*w.world, double(width) / height);
+    // The bodies only, as `asperity render` draws them by default (--layers none).
+    render::WorldViewOptions options;
+    options.debug.layers = 0;
     render::RenderScene frame;
-    view.update(*w.world, {}, frame);
+    view.update(*w.world, options, frame);
     renderer.render(frame, *cam);
     image = renderer.readPixels();
   } catch (const Error& e) {
