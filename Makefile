@@ -37,7 +37,7 @@ test: build
 # Sanitizer reports abort the test that made them; Mesa's own leaks are suppressed by name.
 sanitize: deps
 	@cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DASPERITY_WERROR=ON \
-	  -DASPERITY_SANITIZE=address,undefined -DASPERITY_BUILD_BENCH=OFF >/dev/null
+	  -DASPERITY_SANITIZE=address,undefined -DASPERITY_BUILD_BENCH=OFF -DASPERITY_WITH_PYTHON=OFF >/dev/null
 	@cmake --build $(SANITIZE_BUILD) -j$(JOBS)
 	@cd $(SANITIZE_BUILD) && \
 	  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
@@ -48,7 +48,7 @@ sanitize: deps
 fuzz: deps
 	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=clang \
 	  -DCMAKE_CXX_COMPILER=clang++ -DASPERITY_FUZZ=ON -DASPERITY_WITH_GL=OFF \
-	  -DASPERITY_BUILD_TESTS=OFF -DASPERITY_BUILD_BENCH=OFF >/dev/null
+	  -DASPERITY_BUILD_TESTS=OFF -DASPERITY_BUILD_BENCH=OFF -DASPERITY_WITH_PYTHON=OFF >/dev/null
 	@cmake --build $(FUZZ_BUILD) -j$(JOBS) --target asperity_fuzzers
 	@tests/fuzz/run.sh $(FUZZ_BUILD)/bin $(FUZZ_SECONDS)
 
