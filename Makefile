@@ -54,7 +54,7 @@ fuzz: deps
 
 soak: build
 	@cd $(BUILD) && ASPERITY_SOAK_SECONDS=$(SOAK_SECONDS) ctest --output-on-failure -j$(JOBS) \
-	  -R '^Soak\.' --timeout 0
+	  -R 'Soak\.' --timeout 0
 
 bench: build
 	@for b in $(BUILD)/bin/asperity_*_bench; do echo "== $$b"; $$b; done
@@ -63,4 +63,4 @@ format:
 	@git ls-files '*.cpp' '*.hpp' | xargs clang-format -i
 
 clean:
-	@rm -rf $(BUILD) $(OUT)
+	@rm -rf $(BUILD) $(OUT) $(SANITIZE_BUILD) $(FUZZ_BUILD)

@@ -163,6 +163,29 @@ TEST(RunCommand, BadValuesAreOneLineErrors) {
   expectOneLineError(runCli({"run"}), "SCENE");
 }
 
+TEST(RunCommand, ExplosionsAndDeepNestingAreOneLineErrors) {
+  const std::string dir = test::tempDir("run_extreme");
+  // A body launched above the speed limit stops the run at step 1, named.
+  std::ofstream(dir + "/fast.json") << R"({"bodies": [{"name": "bullet",
+      "linear_velocity": [0, 0, 5000], "shapes": [{"type": "sphere", "radius": 0.1}]}]})";
+  expectOneLineError(runCli({"run", dir + "/fast.json", "--steps", "3"}),
+                     "step 1 (t = 0.01 s): body 'bullet': speed 5e+03 m/s is above the limit");
+  // 100 000 nested arrays: the depth is named (this once overflowed the stack).
+  std::ofstream(dir + "/deep.json") << std::string(100000, '[') << std::string(100000, ']');
+  expectOneLineError(runCli({"run", dir + "/deep.json"}),
+                     "JSON nested 65 levels deep, more than the 64 allowed");
+  // A spring too stiff for dt is warned about before the run.
+  std::ofstream(dir + "/stiff.json") << R"({"bodies": [{"name": "b",
+      "shapes": [{"type": "box", "half_extents": [0.1, 0.1, 0.1]}]}],
+      "springs": [{"name": "s", "body": "b", "target": [0, 0, 0], "stiffness": 1e6}],
+      "settings": {"gravity": [0, 0, 0]}})";
+  const auto stiff = runCli({"run", dir + "/stiff.json", "--steps", "1"});
+  EXPECT_EQ(stiff.exit_code, 0) << stiff.err;
+  EXPECT_NE(stiff.err.find("asperity: warning: " + dir + "/stiff.json: spring 's': period"),
+            std::string::npos)
+      << stiff.err;
+}
+
 TEST(RunCommand, BadSceneFilesAreOneLineErrors) {
   const auto missing = runCli({"run", "/nonexistent/scene.json"});
   EXPECT_EQ(missing.exit_code, 1);
