@@ -7,6 +7,8 @@ mubar_B) finds the k whose simulation slides that far; each bisection step is on
 sweep (a grid of k values run in parallel), narrowing the bracket.
 
     /usr/bin/python3 examples/python/fit_gain.py [--observed 0.45]
+
+Without --observed the observation is the scene's own slide, so the fit recovers k = 2.
 """
 
 import argparse
@@ -30,11 +32,17 @@ def slides(lo, hi, n, seconds):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--observed", type=float, default=0.45, help="slide distance (m)")
+    parser.add_argument("--observed", type=float, default=None,
+                        help="slide distance (m); default: the scene's own slide (k = 2), "
+                             "so the fit should give k back")
     parser.add_argument("--seconds", type=float, default=2.0)
     parser.add_argument("--rounds", type=int, default=3)
     args = parser.parse_args()
 
+    if args.observed is None:
+        r = asperity.sweep(str(SCENE), samples=1, seconds=args.seconds, measure=MEASURE)
+        args.observed = float(r[MEASURE][0])
+        print(f"observed: {args.observed:.3f} m (the scene as written, k = 2)")
     lo, hi = 0.0, 6.0
     for round_ in range(args.rounds):
         gains, dist = slides(lo, hi, 5, args.seconds)

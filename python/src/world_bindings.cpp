@@ -69,6 +69,8 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
   if (patch_width) s.friction.patch_width = *patch_width;
   if (patch_resolution) s.friction.patch_resolution = *patch_resolution;
   w->world = instantiate(w->scene);
+  for (const Body& b : w->world->bodies())
+    w->origin_offsets.push_back(b.com_offset.rotation.conjugate() * b.com_offset.position);
   return w;
 }
 

@@ -26,10 +26,15 @@ py::array_t<double> stateArg(const PyWorld& w, const py::handle& values, py::ssi
   return a;
 }
 
+// Origin of the description frame: descriptionPose().position without the quaternion
+// product it also forms (the same bits: p - R (q_c^-1 p_c) == p + R (-(q_c^-1 p_c))).
+Vec3 frameOrigin(const Body& b, const Vec3& offset) {
+  return b.pose.position - b.pose.rotation * offset;
+}
+
 // Velocity of the description frame's origin (the CSV's vx, vy, vz).
-Vec3 frameVelocity(const Body& b) {
-  return b.linear_velocity +
-         b.angular_velocity.cross(b.descriptionPose().position - b.pose.position);
+Vec3 frameVelocity(const Body& b, const Vec3& offset) {
+  return b.linear_velocity + b.angular_velocity.cross(frameOrigin(b, offset) - b.pose.position);
 }
 
 // A new (B, cols) array filled row by row.
@@ -38,8 +43,8 @@ py::array_t<double> table(const PyWorld& w, py::ssize_t cols, Fill fill) {
   const auto bodies = w.world->bodies();
   py::array_t<double> out({static_cast<py::ssize_t>(bodies.size()), cols});
   double* p = out.mutable_data();
-  for (const Body& b : bodies) {
-    fill(b, p);
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    fill(bodies[i], w.origin_offsets[i], p);
     p += cols;
   }
   return out;
@@ -56,28 +61,28 @@ BodyId PyWorld::bodyId(const std::string& name) const {
 }
 
 py::array_t<double> positions(const PyWorld& w) {
-  return table(w, 3, [](const Body& b, double* p) {
-    const Vec3 x = b.descriptionPose().position;
+  return table(w, 3, [](const Body& b, const Vec3& o, double* p) {
+    const Vec3 x = frameOrigin(b, o);
     p[0] = x.x(), p[1] = x.y(), p[2] = x.z();
   });
 }
 
 py::array_t<double> orientations(const PyWorld& w) {
-  return table(w, 4, [](const Body& b, double* p) {
+  return table(w, 4, [](const Body& b, const Vec3&, double* p) {
     const Quat q = b.descriptionPose().rotation;
     p[0] = q.w(), p[1] = q.x(), p[2] = q.y(), p[3] = q.z();
   });
 }
 
 py::array_t<double> linearVelocities(const PyWorld& w) {
-  return table(w, 3, [](const Body& b, double* p) {
-    const Vec3 v = frameVelocity(b);
+  return table(w, 3, [](const Body& b, const Vec3& o, double* p) {
+    const Vec3 v = frameVelocity(b, o);
     p[0] = v.x(), p[1] = v.y(), p[2] = v.z();
   });
 }
 
 py::array_t<double> angularVelocities(const PyWorld& w) {
-  return table(w, 3, [](const Body& b, double* p) {
+  return table(w, 3, [](const Body& b, const Vec3&, double* p) {
     p[0] = b.angular_velocity.x(), p[1] = b.angular_velocity.y(), p[2] = b.angular_velocity.z();
   });
 }
@@ -124,7 +129,7 @@ void setAngularVelocities(PyWorld& w, const py::handle& values) {
   for (BodyId i = 0; i < w.world->bodies().size(); ++i) {
     // The frame origin keeps its velocity: v_com follows the new angular velocity.
     Body& b = w.world->body(i);
-    const Vec3 v_origin = frameVelocity(b);
+    const Vec3 v_origin = frameVelocity(b, w.origin_offsets[i]);
     b.angular_velocity = Vec3(a.at(i, 0), a.at(i, 1), a.at(i, 2));
     b.linear_velocity =
         v_origin - b.angular_velocity.cross(b.descriptionPose().position - b.pose.position);

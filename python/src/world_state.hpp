@@ -10,6 +10,9 @@ namespace asperity::python {
 struct PyWorld {
   SceneDesc scene;
   std::unique_ptr<World> world;
+  // Per body, the description frame's origin in the body (centre of mass) frame, q_c^-1 p_c:
+  // constant, so reading positions costs one rotation per body.
+  std::vector<Vec3> origin_offsets;
 
   // The body with this name; raises ValueError naming it and listing the known ones.
   BodyId bodyId(const std::string& name) const;
