@@ -90,6 +90,10 @@ TEST(SweepRun, BadSweepsAreRejectedNamingTheCulprit) {
   d = slidingBox(2);
   d.vary = {parseVariation("/bodies/1/shapes/0/half_extents/0=uniform(-2,-1)")};
   expectError(d, "sample 0: sliding_box.json: /bodies/1/shapes/0/half_extents/0");
+  // The OpenGL sampler needs a context that pool threads do not have.
+  d = slidingBox(2);
+  d.scene["settings"]["sampler"] = "gl";
+  expectError(d, "sampler \"gl\" cannot run in a sweep");
   d = slidingBox(2);
   const std::vector<int64_t> outside = {2};
   EXPECT_THROW(Sweep(d).runAll(1, outside), Error);
