@@ -12,7 +12,7 @@
 #include "asperity/error.hpp"
 #include "asperity/scene/friction_registry.hpp"
 #include "cli_common.hpp"
-#include "experiment_outcomes.hpp"
+#include "experiments/experiment_outcomes.hpp"
 
 namespace asperity::cli {
 namespace {

@@ -14,7 +14,7 @@
 #include "asperity/error.hpp"
 #include "asperity/scene/friction_registry.hpp"
 #include "cli_common.hpp"
-#include "experiment_outcomes.hpp"
+#include "experiments/experiment_outcomes.hpp"
 #include "report_plot.hpp"
 
 namespace asperity::cli {
