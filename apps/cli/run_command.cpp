@@ -15,13 +15,9 @@
 #include <optional>
 
 #include "asperity/error.hpp"
-#include "asperity/scene/friction_registry.hpp"
 #include "asperity/scene/scene.hpp"
 #include "asperity/world/state_check.hpp"
 #include "cli_common.hpp"
-#ifdef ASPERITY_HAVE_GL
-#include "asperity/sampler/gl_patch_sampler.hpp"
-#endif
 
 namespace asperity::cli {
 namespace {
@@ -170,22 +166,12 @@ class Progress {
 };
 
 // The scene with the command line's overrides applied.
-SceneDesc loadWithOverrides(const RunOptions& opt) {
-#ifdef ASPERITY_HAVE_GL
-  // Scenes may ask for the OpenGL patch sampler ("gl").
-  registerGlPatchSampler();
-#endif
+SceneDesc loadWithOverrides(const RunOptions& opt, const FrictionProviders& providers) {
   SceneDesc scene = loadScene(opt.scene);
   if (!opt.friction.empty()) scene.settings.limit_surface = kFrictionNames.at(opt.friction);
   if (!opt.frame.empty()) scene.settings.frame_mode = kFrameNames.at(opt.frame);
   if (!opt.sampler.empty()) {
-    if (!hasFrictionProvider(opt.sampler)) {
-      try {
-        makeFrictionProvider(opt.sampler);
-      } catch (const Error& e) {
-        throw Error(std::string("--sampler: ") + e.what());
-      }
-    }
+    checkSampler(providers, opt.sampler);
     scene.sampler = opt.sampler;
   }
   FrictionSettings& friction = scene.settings.friction;
@@ -212,8 +198,10 @@ void writeFile(const std::string& path, const std::string& text, const char* wha
 }
 
 void runScene(const RunOptions& opt) {
-  const SceneDesc scene = loadWithOverrides(opt);
-  std::unique_ptr<World> world = instantiate(scene);
+  // Scenes and --sampler may name every sampler of the tool ("gl" included).
+  const FrictionProviders providers = frictionProviders();
+  const SceneDesc scene = loadWithOverrides(opt, providers);
+  std::unique_ptr<World> world = instantiate(scene, {providers});
   // Parameters that cannot be simulated stably are named before the run (it may still work).
   for (const std::string& warning : stabilityWarnings(*world))
     std::fprintf(stderr, "asperity: warning: %s: %s\n", opt.scene.c_str(), warning.c_str());

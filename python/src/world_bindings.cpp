@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "asperity/error.hpp"
-#include "asperity/scene/friction_registry.hpp"
+#include "asperity/scene/friction_providers.hpp"
 #include "world_state.hpp"
 #ifdef ASPERITY_HAVE_RENDER
 #include "asperity/sampler/gl_patch_sampler.hpp"
@@ -40,9 +40,10 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
                                    std::optional<std::string> frame, std::optional<int> directions,
                                    std::optional<double> patch_width,
                                    std::optional<int> patch_resolution) {
+  // Scenes may ask for the core samplers and, when built with OpenGL, "gl".
+  InstantiateOptions options;
 #ifdef ASPERITY_HAVE_RENDER
-  // Scenes may ask for the OpenGL patch sampler ("gl").
-  registerGlPatchSampler();
+  addGlPatchSampler(options.providers);
 #endif
   auto w = std::make_unique<PyWorld>();
   w->scene = sceneFrom(scene_arg).desc;
@@ -50,9 +51,9 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
   if (friction) s.limit_surface = lookup(kFrictionNames, *friction, "friction");
   if (frame) s.frame_mode = lookup(kFrameNames, *frame, "frame");
   if (sampler) {
-    if (!hasFrictionProvider(*sampler)) {
+    if (!options.providers.has(*sampler)) {
       try {
-        makeFrictionProvider(*sampler);
+        options.providers.make(*sampler);
       } catch (const Error& e) {
         throwValue(std::string("sampler: ") + e.what());
       }
@@ -68,7 +69,7 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
   if (directions) s.friction.directions = *directions;
   if (patch_width) s.friction.patch_width = *patch_width;
   if (patch_resolution) s.friction.patch_resolution = *patch_resolution;
-  w->world = instantiate(w->scene);
+  w->world = instantiate(w->scene, options);
   for (const Body& b : w->world->bodies())
     w->origin_offsets.push_back(b.com_offset.rotation.conjugate() * b.com_offset.position);
   return w;
