@@ -6,6 +6,8 @@ find_package(CLI11 REQUIRED)
 
 find_package(meshoptimizer REQUIRED)
 find_package(tinyobjloader REQUIRED)
+# glTF, FBX, COLLADA and 3DS meshes with their materials (Open Asset Import Library).
+find_package(assimp 5 REQUIRED)
 find_package(PkgConfig REQUIRED)
 # Bullet (single precision, as Debian builds it) for broadphase and convex contacts.
 pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet)

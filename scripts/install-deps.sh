@@ -8,7 +8,7 @@ packages=(
   build-essential cmake pkg-config
   # core library
   libeigen3-dev libstb-dev nlohmann-json3-dev libcli11-dev libbullet-dev
-  libmeshoptimizer-dev libtinyobjloader-dev
+  libmeshoptimizer-dev libtinyobjloader-dev libassimp-dev
   # command-line tool plots (SVG and PNG) and their font
   libcairo2-dev fonts-dejavu-core
   # tests and benchmarks
