@@ -2,7 +2,9 @@
 // generators and their parameters. Generator parameters are dynamic (`--sx 0.1`), collected
 // from CLI11's extras and checked by generateNormalMap.
 #include <cstdio>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <memory>
 
 #include <nlohmann/json.hpp>
@@ -94,7 +96,11 @@ void runTexture(const TextureOptions& opt, const std::vector<std::string>& extra
 void runInspect(const std::string& file, bool json) {
   // Decoded as OpenGL; the verdict says whether DirectX fits better.
   NormalMapStats stats;
-  const NormalMap map = loadNormalMapPng(file, GreenConvention::OpenGL, &stats);
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw Error("texture inspect: cannot open '" + file + "'");
+  const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in),
+                                   std::istreambuf_iterator<char>()};
+  const NormalMap map = decodeNormalMap(bytes, file, GreenConvention::OpenGL, 1.0, &stats);
   const GreenFit fit = judgeGreenConvention(map);
   const double slope = meanSlope(map);
   // The whole-texture box cone against a flat partner (as `asperity cone FILE`).
@@ -149,11 +155,11 @@ void registerTextureCommand(CLI::App& app) {
   // `texture inspect FILE [--json]` reads a map instead of writing one.
   auto inspect_file = std::make_shared<std::string>();
   auto inspect_json = std::make_shared<bool>(false);
-  CLI::App* inspect = sub->add_subcommand(
-      "inspect",
-      "Report a normal map PNG: size, bits, texels that are not normals, the green convention "
-      "its slopes fit, mean slope, box cone");
-  inspect->add_option("file", *inspect_file, "Normal map PNG")->required();
+  CLI::App* inspect = sub->add_subcommand("inspect",
+                                          "Report a normal map (PNG, JPEG): size, bits, texels "
+                                          "that are not normals, the green convention "
+                                          "its slopes fit, mean slope, box cone");
+  inspect->add_option("file", *inspect_file, "Normal map image (PNG, JPEG)")->required();
   inspect->add_flag("--json", *inspect_json, "Print JSON");
   inspect->callback([inspect_file, inspect_json]() { runInspect(*inspect_file, *inspect_json); });
 

@@ -115,7 +115,8 @@ void readNormalTexture(const aiScene& scene, const aiMaterial& m, const detail::
 
 // Appends one placed mesh's triangles (positions transformed and scaled, uvs of `uv_set`).
 bool hasUvs(const aiMesh& m, int uv_set) {
-  return uv_set < AI_MAX_NUMBER_OF_TEXTURECOORDS && m.HasTextureCoords(static_cast<unsigned>(uv_set));
+  return uv_set < AI_MAX_NUMBER_OF_TEXTURECOORDS &&
+         m.HasTextureCoords(static_cast<unsigned>(uv_set));
 }
 
 // Appends one placed mesh's triangles (positions transformed and scaled, uvs of `uv_set` when

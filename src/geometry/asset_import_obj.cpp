@@ -42,15 +42,15 @@ AssetMaterial readMaterial(const tinyobj::material_t& m, const std::string& path
   const std::string ref = norm ? m.normal_texname : m.bump_texname;
   if (ref.empty()) return out;
   out.has_normal_texture = true;
-  out.normal_scale = static_cast<double>(norm ? m.normal_texopt.bump_multiplier
-                                              : m.bump_texopt.bump_multiplier);
+  out.normal_scale =
+      static_cast<double>(norm ? m.normal_texopt.bump_multiplier : m.bump_texopt.bump_multiplier);
   if (!options.load_textures) return out;
   const std::string part = "image '" + ref + "'";
   const std::string dir = std::filesystem::path(path).parent_path().string();
   const std::vector<uint8_t> bytes = readAssetFile(resolveBeside(dir, ref), path, part);
   out.normal_map_name = part;
-  out.normal_map = std::make_shared<const NormalMap>(decodeAssetNormalMap(
-      bytes, path, part, options.green, out.normal_scale, out.normal_stats));
+  out.normal_map = std::make_shared<const NormalMap>(
+      decodeAssetNormalMap(bytes, path, part, options.green, out.normal_scale, out.normal_stats));
   return out;
 }
 
@@ -75,7 +75,11 @@ NormalMap decodeAssetNormalMap(const std::vector<uint8_t>& bytes, const std::str
   const std::string name = asset + ": normal map " + part;
   NormalMap map;
   try {
-    map = decodeNormalMap(bytes, part, green, scale, &stats);
+    // The image's own name inside the decoder's message (part is `image 'NAME'`).
+    const size_t open = part.find('\''), close = part.rfind('\'');
+    const std::string ref =
+        open != std::string::npos && close > open ? part.substr(open + 1, close - open - 1) : part;
+    map = decodeNormalMap(bytes, ref, green, scale, &stats);
   } catch (const Error& e) {
     throw Error(asset + ": normal map: " + e.what());
   }

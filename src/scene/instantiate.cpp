@@ -58,9 +58,10 @@ GainMask loadGainMask(const std::string& path) {
 void warnGreenContradiction(const std::string& path, GreenConvention green, const NormalMap& map) {
   if (judgeGreenConvention(map).verdict != GreenVerdict::DirectX) return;
   const bool directx = green == GreenConvention::DirectX;
-  std::cerr << "asperity: warning: " << path << ": the surface says \"directx\": "
-            << (directx ? "true" : "false") << " but the map's slopes fit the "
-            << (directx ? "OpenGL" : "DirectX") << " convention (asperity texture inspect)\n";
+  std::cerr << "asperity: warning: " << path
+            << ": the surface says \"directx\": " << (directx ? "true" : "false")
+            << " but the map's slopes fit the " << (directx ? "OpenGL" : "DirectX")
+            << " convention (asperity texture inspect)\n";
 }
 
 }  // namespace
@@ -98,9 +99,9 @@ std::shared_ptr<const GainMask> ResourceCache::mask(const std::string& file) {
 std::shared_ptr<const ImportedAsset> ResourceCache::asset(const SceneMesh& source,
                                                           GreenConvention green) {
   const std::string path = resolvePath(base_dir_, source.file);
-  auto& slot = assets_[path + ":" + formatNumber(source.scale) + ":" +
-                       std::to_string(source.simplify) + ":" + source.node +
-                       (green == GreenConvention::DirectX ? ":directx" : ":opengl")];
+  auto& slot =
+      assets_[path + ":" + formatNumber(source.scale) + ":" + std::to_string(source.simplify) +
+              ":" + source.node + (green == GreenConvention::DirectX ? ":directx" : ":opengl")];
   if (!slot) slot = loadSceneMesh(path, source, green);
   return slot;
 }
@@ -133,8 +134,7 @@ BodyDesc resolveMeshes(const SceneDesc& scene, size_t index, scene::ResourceCach
     const bool hull = shape.type == ShapeType::ConvexHull;
     const std::string ptr =
         body_ptr + "/shapes/" + std::to_string(m.shape) + (hull ? "/mesh" : "/file");
-    const auto asset =
-        withContext(scene, ptr, [&] { return cache.asset(m, shape.surface.green); });
+    const auto asset = withContext(scene, ptr, [&] { return cache.asset(m, shape.surface.green); });
     shape.mesh = asset->mesh;
     // The asset's own normal map when the surface names none (SPEC 10).
     Surface& s = shape.surface;

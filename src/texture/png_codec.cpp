@@ -253,9 +253,8 @@ Image decodeAny(const std::vector<uint8_t>& bytes, const std::string& path, int 
                 stbi_failure_reason() + ")");
   }
   if (w <= 0 || h <= 0 || w > max_size || h > max_size) {
-    throw Error("image '" + path + "': image of " + std::to_string(w) + " x " +
-                std::to_string(h) + " texels exceeds the limit of " + std::to_string(max_size) +
-                " per side");
+    throw Error("image '" + path + "': image of " + std::to_string(w) + " x " + std::to_string(h) +
+                " texels exceeds the limit of " + std::to_string(max_size) + " per side");
   }
   // Decode to 8 bits per channel and convert to [0, 1].
   std::unique_ptr<stbi_uc, void (*)(void*)> raw(

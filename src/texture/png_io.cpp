@@ -73,8 +73,7 @@ void warnInvalidTexels(const std::string& name, const NormalMapStats& stats) {
             << " % of texels are not unit normals; treated as flat\n";
 }
 
-NormalMap loadNormalMapPng(const std::string& path, GreenConvention green,
-                           NormalMapStats* stats) {
+NormalMap loadNormalMapPng(const std::string& path, GreenConvention green, NormalMapStats* stats) {
   // Header checks (size, colour type) come before any decoding.
   const std::vector<uint8_t> bytes = png::readFile(path);
   requireRgb(png::inspect(bytes, path, kMaxTextureSize), path);

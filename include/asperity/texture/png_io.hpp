@@ -41,8 +41,7 @@ void warnInvalidTexels(const std::string& name, const NormalMapStats& stats);
 // Throws asperity::Error naming the file and the problem (missing, corrupt, grayscale, palette,
 // zero-sized, over kMaxTextureSize, ...). Invalid texels become flat; they are warned about
 // (warnInvalidTexels) unless `stats` is given, when the caller reports them.
-NormalMap loadNormalMapPng(const std::string& path,
-                           GreenConvention green = GreenConvention::OpenGL,
+NormalMap loadNormalMapPng(const std::string& path, GreenConvention green = GreenConvention::OpenGL,
                            NormalMapStats* stats = nullptr);
 
 // A normal map from an encoded image in memory (PNG, JPEG, BMP or TGA, as embedded in a .glb or
