@@ -8,6 +8,8 @@ find_package(meshoptimizer REQUIRED)
 find_package(tinyobjloader REQUIRED)
 # glTF, FBX, COLLADA and 3DS meshes with their materials (Open Asset Import Library).
 find_package(assimp 5 REQUIRED)
+# oneTBB runs the samples of `asperity sweep` on a pool of threads.
+find_package(TBB REQUIRED)
 find_package(PkgConfig REQUIRED)
 # Bullet (single precision, as Debian builds it) for broadphase and convex contacts.
 pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet)
@@ -30,4 +32,15 @@ if(ASPERITY_BUILD_TESTS)
 endif()
 if(ASPERITY_BUILD_BENCH)
   find_package(benchmark REQUIRED)
+endif()
+
+# The Python module: Debian's interpreter (/usr/bin/python3), never another python3 on PATH, so
+# that `cmake --install` puts the module where Debian's python3 and its NumPy find it.
+if(ASPERITY_WITH_PYTHON)
+  if(NOT DEFINED Python_EXECUTABLE AND EXISTS /usr/bin/python3)
+    set(Python_EXECUTABLE /usr/bin/python3)
+  endif()
+  set(PYBIND11_FINDPYTHON ON)
+  find_package(Python 3.9 REQUIRED COMPONENTS Interpreter Development.Module NumPy)
+  find_package(pybind11 2.6 CONFIG REQUIRED)
 endif()

@@ -8,7 +8,13 @@ packages=(
   build-essential cmake pkg-config
   # core library
   libeigen3-dev libstb-dev nlohmann-json3-dev libcli11-dev libbullet-dev
-  libmeshoptimizer-dev libtinyobjloader-dev libassimp-dev
+  libmeshoptimizer-dev libtinyobjloader-dev
+  # meshes and their materials from glTF, FBX, COLLADA and 3DS files
+  libassimp-dev
+  # ensembles of runs on a pool of threads
+  libtbb-dev
+  # the Python module, its tests, examples and cluster runs (Debian's /usr/bin/python3)
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed python3-matplotlib
   # command-line tool plots (SVG and PNG) and their font
   libcairo2-dev fonts-dejavu-core
   # tests and benchmarks

@@ -7,6 +7,7 @@ void registerRunCommand(CLI::App& app);     // apps/cli/run_command.cpp
 void registerPatchCommand(CLI::App& app);   // apps/cli/patch_command.cpp
 void registerBenchCommand(CLI::App& app);   // apps/cli/bench_command.cpp
 void registerReportCommand(CLI::App& app);  // apps/cli/report_command.cpp
+void registerSweepCommand(CLI::App& app);   // apps/cli/sweep_command.cpp
 }  // namespace asperity::cli
 
 int main(int argc, char** argv) {
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
   asperity::cli::registerTextureCommand(app);
   asperity::cli::registerConeCommand(app);
   asperity::cli::registerRunCommand(app);
+  asperity::cli::registerSweepCommand(app);
   asperity::cli::registerPatchCommand(app);
   asperity::cli::registerRenderCommand(app);
   asperity::cli::registerBenchCommand(app);

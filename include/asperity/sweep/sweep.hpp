@@ -1,0 +1,100 @@
+// Ensembles of runs (`asperity sweep`, asperity.sweep in Python): one scene, some of its
+// numbers varied per sample, every sample an independent world run for the same time.
+//
+// A variation is `PATH=SPEC`: PATH is a JSON pointer into the scene file, where a `*` segment
+// stands for every element of an array (`/bodies/*/linear_velocity/0`); SPEC is
+// `uniform(a,b)`, `normal(m,s)`, `choice(v1,v2,...)` or `grid(a,b,n)`. One value is drawn per
+// variation and sample and written to every path the variation matches. Sample i of seed S
+// draws from its own generator seeded by (S, i, variation), so it gives the same bytes
+// whatever the thread count or the order samples run in. Grids enumerate their n values in
+// mixed radix over the sample index (the first grid varies fastest).
+#pragma once
+
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "asperity/math/types.hpp"
+
+namespace asperity {
+
+enum class Distribution { Uniform, Normal, Choice, Grid };
+
+struct Variation {
+  std::string path;  // as written, `*` segments unexpanded
+  Distribution distribution = Distribution::Uniform;
+  std::vector<double> args;  // uniform: a, b; normal: mean, sd; choice: values; grid: a, b, n
+};
+
+// Parses "PATH=SPEC". Throws asperity::Error "--vary 'TEXT': what is wrong".
+Variation parseVariation(const std::string& text);
+// Parses SPEC for PATH. Throws like parseVariation.
+Variation parseVariation(const std::string& path, const std::string& spec);
+
+// The JSON pointers a path matches in `scene` (every `*` expanded, in array order). Throws
+// asperity::Error "--vary PATH: ..." when a segment is missing or a match is not a number.
+std::vector<std::string> expandPath(const nlohmann::json& scene, const std::string& path);
+
+// Built-in measures, named "KIND:BODY": distance (m the body frame's origin moved from its
+// start), speed (m/s of that origin at the end), angle (deg turned from the start), height (z
+// at the end, m).
+inline constexpr const char* kMeasureKinds[] = {"distance", "speed", "angle", "height"};
+
+struct SweepDesc {
+  nlohmann::json scene;    // the scene file's JSON
+  std::string scene_file;  // for messages; relative paths resolve against its folder
+  std::vector<Variation> vary;
+  int64_t samples = 1;
+  uint64_t seed = 1;
+  double seconds = 1.0;               // simulated per sample
+  std::vector<std::string> measures;  // "KIND:BODY"
+};
+
+// One finished sample.
+struct SampleResult {
+  int64_t index = 0;
+  std::vector<double> values;  // one per variation
+  // Every body in scene order, as `asperity run`'s CSV: the pose of the frame the scene wrote
+  // (x, y, z, qw, qx, qy, qz), the velocity of its origin and the angular velocity.
+  std::vector<Transform> poses;
+  std::vector<Vec3> linear_velocities;
+  std::vector<Vec3> angular_velocities;
+  std::vector<double> measures;  // one per SweepDesc::measures
+  uint64_t state_hash = 0;
+};
+
+// The plan of a sweep, checked: paths expanded, measures resolved, body names read.
+class Sweep {
+ public:
+  // Throws asperity::Error for a bad variation, path, sample count, time or measure, or a
+  // scene that does not load.
+  explicit Sweep(SweepDesc desc);
+
+  const SweepDesc& desc() const { return desc_; }
+  const std::vector<std::string>& bodyNames() const { return body_names_; }
+  // The values sample `index` takes, one per variation (no world is built).
+  std::vector<double> values(int64_t index) const;
+  // Builds the scene with sample `index`'s values, runs it for desc().seconds and records it.
+  // Throws asperity::Error naming the sample when the varied scene is invalid.
+  SampleResult run(int64_t index) const;
+  // Runs the given samples (all when empty) on `threads` threads of a oneTBB pool (0 = every
+  // core); results come back in the order of `indices`, identical for any thread count.
+  std::vector<SampleResult> runAll(int threads, std::span<const int64_t> indices = {}) const;
+
+  // Column names of the table: sample, the variations' paths, each body's
+  // NAME.x .. NAME.qz, the measures, state_hash.
+  std::vector<std::string> columns() const;
+  // The table as CSV (header, then one row per result; numbers in shortest round-trip form).
+  std::string csv(std::span<const SampleResult> results) const;
+
+ private:
+  SweepDesc desc_;
+  std::vector<std::vector<std::string>> pointers_;  // per variation, its expanded pointers
+  std::vector<std::string> body_names_;
+  std::vector<std::pair<int, size_t>> measures_;  // (kind index, body index)
+  int64_t steps_ = 0;
+};
+
+}  // namespace asperity

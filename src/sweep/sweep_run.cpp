@@ -1,0 +1,171 @@
+// Running a sweep: each sample builds its own scene and world, runs it on a oneTBB pool and
+// records final poses, measures and the state hash; the table is written as CSV.
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+
+#include "asperity/error.hpp"
+#include "asperity/scene/scene.hpp"
+#include "asperity/sweep/sweep.hpp"
+
+namespace asperity {
+namespace {
+
+// Steps of `seconds` at dt, as `asperity run --seconds`: ceil(seconds / dt).
+int64_t stepsFor(double seconds, double dt) {
+  const double n = std::ceil(seconds / dt - 1e-9);
+  if (!(n <= 1e9)) throw Error("--seconds: more than 1e9 steps of " + std::to_string(dt) + " s");
+  return static_cast<int64_t>(n);
+}
+
+// "KIND:BODY" as (kind index, body index). Throws naming the measure.
+std::pair<int, size_t> resolveMeasure(const std::string& name,
+                                      const std::vector<std::string>& bodies) {
+  const size_t colon = name.find(':');
+  const std::string kind = name.substr(0, colon);
+  int k = 0;
+  while (k < 4 && kind != kMeasureKinds[k]) ++k;
+  if (colon == std::string::npos || k == 4)
+    throw Error("--measure '" + name +
+                "': expected KIND:BODY with KIND one of distance, speed, angle, height");
+  const std::string body = name.substr(colon + 1);
+  for (size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i] == body) return {k, i};
+  throw Error("--measure '" + name + "': the scene has no body named '" + body + "'");
+}
+
+// The value of one built-in measure from the start and end of a run.
+double measure(int kind, const Transform& start, const Transform& end, const Vec3& velocity) {
+  switch (kind) {
+    case 0:
+      return (end.position - start.position).norm();
+    case 1:
+      return velocity.norm();
+    case 2:
+      return start.rotation.angularDistance(end.rotation) * 180.0 / kPi;
+    default:
+      return end.position.z();
+  }
+}
+
+// Appends the shortest text that reads back to the same double.
+void appendNumber(std::string& line, double x) {
+  char buffer[32];
+  const auto r = std::to_chars(buffer, buffer + sizeof(buffer), x);
+  line.append(buffer, r.ptr);
+}
+
+}  // namespace
+
+Sweep::Sweep(SweepDesc desc) : desc_(std::move(desc)) {
+  // Counts and time first, then every path against the unmodified scene.
+  if (desc_.samples < 1 || desc_.samples > 100000000)
+    throw Error("--samples must be in 1..100000000, got " + std::to_string(desc_.samples));
+  if (!std::isfinite(desc_.seconds) || desc_.seconds < 0.0)
+    throw Error("--seconds must be a finite number >= 0");
+  for (const Variation& v : desc_.vary) pointers_.push_back(expandPath(desc_.scene, v.path));
+  // The scene itself must load; its bodies name the pose columns and the measures.
+  const SceneDesc scene = parseScene(desc_.scene, desc_.scene_file);
+  // Pool threads have no OpenGL context: only the core's samplers run in a sweep.
+  if (scene.sampler != "constant" && scene.sampler != "cone" && scene.sampler != "cpu")
+    throw Error(desc_.scene_file + ": sampler \"" + scene.sampler +
+                "\" cannot run in a sweep (available: constant, cone, cpu)");
+  for (const BodyDesc& b : scene.bodies) body_names_.push_back(b.name);
+  for (const std::string& m : desc_.measures) measures_.push_back(resolveMeasure(m, body_names_));
+  steps_ = stepsFor(desc_.seconds, scene.settings.dt);
+}
+
+SampleResult Sweep::run(int64_t index) const {
+  SampleResult r;
+  r.index = index;
+  r.values = values(index);
+  // The scene with this sample's values written at every matching pointer.
+  nlohmann::json json = desc_.scene;
+  for (size_t j = 0; j < pointers_.size(); ++j)
+    for (const std::string& p : pointers_[j]) json[nlohmann::json::json_pointer(p)] = r.values[j];
+  std::unique_ptr<World> world;
+  try {
+    world = instantiate(parseScene(json, desc_.scene_file));
+  } catch (const Error& e) {
+    throw Error("sample " + std::to_string(index) + ": " + e.what());
+  }
+  // Start poses for the measures, then the run.
+  std::vector<Transform> start;
+  for (const Body& b : world->bodies()) start.push_back(b.descriptionPose());
+  for (int64_t i = 0; i < steps_; ++i) world->step();
+  // Final state in the CSV's frame: the description frame's origin and its velocity.
+  for (const Body& b : world->bodies()) {
+    const Transform pose = b.descriptionPose();
+    r.poses.push_back(pose);
+    r.linear_velocities.push_back(b.linear_velocity +
+                                  b.angular_velocity.cross(pose.position - b.pose.position));
+    r.angular_velocities.push_back(b.angular_velocity);
+  }
+  for (const auto& [kind, body] : measures_)
+    r.measures.push_back(measure(kind, start[body], r.poses[body], r.linear_velocities[body]));
+  r.state_hash = world->stateHash();
+  return r;
+}
+
+std::vector<SampleResult> Sweep::runAll(int threads, std::span<const int64_t> indices) const {
+  std::vector<int64_t> all;
+  if (indices.empty()) {
+    all.resize(static_cast<size_t>(desc_.samples));
+    std::iota(all.begin(), all.end(), int64_t{0});
+    indices = all;
+  }
+  for (int64_t i : indices)
+    if (i < 0 || i >= desc_.samples)
+      throw Error("sample index " + std::to_string(i) + " is outside 0.." +
+                  std::to_string(desc_.samples - 1));
+  if (threads < 0) throw Error("--threads must be >= 0 (0 = every core)");
+  // One task per sample, each writing its own slot: the order of completion cannot matter.
+  std::vector<SampleResult> results(indices.size());
+  tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : threads);
+  arena.execute([&] {
+    tbb::parallel_for(size_t{0}, indices.size(), [&](size_t k) { results[k] = run(indices[k]); });
+  });
+  return results;
+}
+
+std::vector<std::string> Sweep::columns() const {
+  std::vector<std::string> names = {"sample"};
+  for (const Variation& v : desc_.vary) names.push_back(v.path);
+  for (const std::string& body : body_names_)
+    for (const char* c : {".x", ".y", ".z", ".qw", ".qx", ".qy", ".qz"}) names.push_back(body + c);
+  for (const std::string& m : desc_.measures) names.push_back(m);
+  names.push_back("state_hash");
+  return names;
+}
+
+std::string Sweep::csv(std::span<const SampleResult> results) const {
+  std::string text;
+  // Header.
+  const std::vector<std::string> names = columns();
+  for (size_t i = 0; i < names.size(); ++i) text += (i ? "," : "") + names[i];
+  text += '\n';
+  // One row per sample: index, values, poses, measures, hash.
+  for (const SampleResult& r : results) {
+    text += std::to_string(r.index);
+    auto add = [&text](double x) {
+      text += ',';
+      appendNumber(text, x);
+    };
+    for (double v : r.values) add(v);
+    for (const Transform& p : r.poses) {
+      for (int k = 0; k < 3; ++k) add(p.position[k]);
+      for (double q : {p.rotation.w(), p.rotation.x(), p.rotation.y(), p.rotation.z()}) add(q);
+    }
+    for (double m : r.measures) add(m);
+    char hash[20];
+    std::snprintf(hash, sizeof(hash), ",%016llx\n", static_cast<unsigned long long>(r.state_hash));
+    text += hash;
+  }
+  return text;
+}
+
+}  // namespace asperity
