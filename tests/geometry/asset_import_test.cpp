@@ -48,8 +48,9 @@ TEST(AssetImport, GltfPlateBringsItsNormalMapAndBaseColour) {
   EXPECT_NEAR(a.material.base_color.x(), 0.8, 1e-6);
   // glTF's v runs down the image; the mesh keeps OpenGL's v up: file (0, 1) at (-0.1, -0.1).
   for (size_t v = 0; v < a.mesh->vertices.size(); ++v) {
-    if (a.mesh->vertices[v].isApprox(Vec3(-0.1, -0.1, 0), 1e-6))
+    if (a.mesh->vertices[v].isApprox(Vec3(-0.1, -0.1, 0), 1e-6)) {
       EXPECT_TRUE(a.mesh->uvs[v].isApprox(Vec2(0, 0), 1e-6)) << a.mesh->uvs[v].transpose();
+    }
   }
 }
 

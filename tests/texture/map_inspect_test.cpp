@@ -18,7 +18,7 @@ NormalMap heightFieldNormals(int w, int h, double a, GreenConvention green) {
       const double du = a * ku * std::cos(ku * i) * std::sin(kv * j);
       const double dv = a * kv * std::sin(ku * i) * std::cos(kv * j);
       const double y = green == GreenConvention::DirectX ? dv : -dv;
-      map.at(i, j) = Vec3d(-du, y, 1.0).normalized().cast<float>();
+      map.at(i, j) = Vec3(-du, y, 1.0).normalized().cast<float>();
     }
   return map;
 }
