@@ -10,9 +10,8 @@
 #include <vector>
 
 #include "asperity/error.hpp"
-#include "asperity/scene/friction_registry.hpp"
 #include "cli_common.hpp"
-#include "experiment_outcomes.hpp"
+#include "experiments/experiment_outcomes.hpp"
 
 namespace asperity::cli {
 namespace {
@@ -85,12 +84,15 @@ nlohmann::ordered_json rowJson(const TableRow& r) {
 }
 
 void runBench(const BenchOptions& opt) {
-  if (!opt.sampler.empty() && !hasFrictionProvider(opt.sampler)) makeFrictionProvider(opt.sampler);
+  // Every sampler of the tool ("gl" included), checked before the first scene runs.
+  const FrictionProviders providers = frictionProviders();
+  checkSampler(providers, opt.sampler);
   const std::vector<std::string> scenes =
       opt.scenes.empty() ? experiments::catalogScenePaths(opt.scenes_dir) : opt.scenes;
   // One row per scene, printed as a table and optionally written as JSON.
   std::vector<TableRow> rows;
-  for (const std::string& path : scenes) rows.push_back(experiments::benchScene(path, opt.sampler));
+  for (const std::string& path : scenes)
+    rows.push_back(experiments::benchScene(path, opt.sampler, providers));
   printTable(rows);
   if (opt.json.empty()) return;
   nlohmann::ordered_json j = nlohmann::ordered_json::array();

@@ -7,6 +7,9 @@
 #include <sstream>
 
 #include "asperity/error.hpp"
+#ifdef ASPERITY_HAVE_GL
+#include "asperity/sampler/gl_patch_sampler.hpp"
+#endif
 
 namespace asperity::cli {
 
@@ -112,6 +115,26 @@ CLI::Validator numberInRange(double min, double max) {
         return {};
       },
       "NUMBER in " + range.str());
+}
+
+FrictionProviders frictionProviders() {
+  FrictionProviders providers = FrictionProviders::builtIn();
+#ifdef ASPERITY_HAVE_GL
+  // Scenes and --sampler may ask for the OpenGL patch sampler from every subcommand.
+  addGlPatchSampler(providers);
+#endif
+  return providers;
+}
+
+void checkSampler(const FrictionProviders& providers, const std::string& name,
+                  const std::string& option) {
+  if (name.empty() || providers.has(name)) return;
+  // make() throws the message listing the known names.
+  try {
+    providers.make(name);
+  } catch (const Error& e) {
+    throw Error(option + ": " + e.what());
+  }
 }
 
 }  // namespace asperity::cli

@@ -9,6 +9,8 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "asperity/scene/friction_providers.hpp"
+
 namespace asperity::cli {
 
 // Subcommands (apps/cli/<name>_command.cpp).
@@ -30,6 +32,14 @@ CLI::Validator positiveNumber();
 CLI::Validator notNegative();
 // Accepts finite numbers in [min, max] (NaN rejected), with a message naming the bounds.
 CLI::Validator numberInRange(double min, double max);
+
+// The friction samplers every subcommand offers: the core library's and, when the tool is built
+// with OpenGL, "gl" (each call makes a new table; worlds get their providers from it).
+FrictionProviders frictionProviders();
+// Throws asperity::Error `<option>: unknown friction sampler "x" (available: ...)` unless
+// `name` is empty or in `providers`.
+void checkSampler(const FrictionProviders& providers, const std::string& name,
+                  const std::string& option = "--sampler");
 
 // Prints `asperity: error: <message>` as one line on stderr (newlines become spaces).
 void printError(const std::string& message);

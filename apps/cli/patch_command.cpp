@@ -119,7 +119,7 @@ void runPatch(const PatchOptions& opt) {
   if (opt.out.empty()) throw Error("patch: --out FILE.png is required");
   // The scene after K steps, and contact I of that step.
   const SceneDesc scene = loadScene(opt.scene);
-  std::unique_ptr<World> world = instantiate(scene);
+  std::unique_ptr<World> world = instantiate(scene, {frictionProviders()});
   for (int k = 0; k < opt.step; ++k) world->step();
   const std::vector<Contact>& contacts = world->contacts();
   if (opt.contact >= static_cast<int>(contacts.size())) {

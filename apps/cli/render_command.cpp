@@ -19,7 +19,6 @@
 #include "asperity/render/video_writer.hpp"
 #include "asperity/render/world_view.hpp"
 #include "asperity/sampler/gl_patch_sampler.hpp"
-#include "asperity/scene/friction_registry.hpp"
 #include "asperity/scene/scene.hpp"
 namespace asperity::cli {
 namespace {
@@ -121,13 +120,13 @@ void runRender(const RenderCommandOptions& o) {
                 "--out DIR/)");
 
   // The world, with the chosen friction sampler ("gl" included).
-  registerGlPatchSampler();
+  const FrictionProviders providers = frictionProviders();
   SceneDesc scene = loadScene(o.scene);
   if (!o.sampler.empty()) {
-    makeFrictionProvider(o.sampler);  // throws for an unknown name, listing the known ones
+    checkSampler(providers, o.sampler);  // names the known ones
     scene.sampler = o.sampler;
   }
-  std::unique_ptr<World> world = instantiate(scene);
+  std::unique_ptr<World> world = instantiate(scene, {providers});
 
   // Headless context and renderer.
   gl::GlContext context;

@@ -12,9 +12,8 @@
 #include <vector>
 
 #include "asperity/error.hpp"
-#include "asperity/scene/friction_registry.hpp"
 #include "cli_common.hpp"
-#include "experiment_outcomes.hpp"
+#include "experiments/experiment_outcomes.hpp"
 #include "report_plot.hpp"
 
 namespace asperity::cli {
@@ -152,7 +151,9 @@ std::string experimentSection(const Experiment& e, const Outcome& out, const std
 }
 
 void writeReport(const ReportOptions& opt) {
-  if (!opt.sampler.empty() && !hasFrictionProvider(opt.sampler)) makeFrictionProvider(opt.sampler);
+  // Every sampler of the tool ("gl" included), checked before the first experiment runs.
+  const FrictionProviders providers = frictionProviders();
+  checkSampler(providers, opt.sampler);
   const fs::path dir = fs::path(opt.out) / "report";
   std::error_code ec;
   fs::create_directories(dir, ec);
@@ -166,6 +167,7 @@ void writeReport(const ReportOptions& opt) {
   experiments::RunOptions run;
   run.scenes_dir = opt.scenes_dir;
   run.sampler = opt.sampler;
+  run.providers = providers;
   run.record_every = 2;
   std::vector<Outcome> outcomes;
   std::string sections;

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "experiment_outcomes.hpp"
+#include "experiments/experiment_outcomes.hpp"
 
 namespace asperity::cli {
 

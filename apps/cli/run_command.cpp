@@ -15,12 +15,8 @@
 #include <optional>
 
 #include "asperity/error.hpp"
-#include "asperity/scene/friction_registry.hpp"
 #include "asperity/scene/scene.hpp"
 #include "cli_common.hpp"
-#ifdef ASPERITY_HAVE_GL
-#include "asperity/sampler/gl_patch_sampler.hpp"
-#endif
 
 namespace asperity::cli {
 namespace {
@@ -169,22 +165,12 @@ class Progress {
 };
 
 // The scene with the command line's overrides applied.
-SceneDesc loadWithOverrides(const RunOptions& opt) {
-#ifdef ASPERITY_HAVE_GL
-  // Scenes may ask for the OpenGL patch sampler ("gl").
-  registerGlPatchSampler();
-#endif
+SceneDesc loadWithOverrides(const RunOptions& opt, const FrictionProviders& providers) {
   SceneDesc scene = loadScene(opt.scene);
   if (!opt.friction.empty()) scene.settings.limit_surface = kFrictionNames.at(opt.friction);
   if (!opt.frame.empty()) scene.settings.frame_mode = kFrameNames.at(opt.frame);
   if (!opt.sampler.empty()) {
-    if (!hasFrictionProvider(opt.sampler)) {
-      try {
-        makeFrictionProvider(opt.sampler);
-      } catch (const Error& e) {
-        throw Error(std::string("--sampler: ") + e.what());
-      }
-    }
+    checkSampler(providers, opt.sampler);
     scene.sampler = opt.sampler;
   }
   FrictionSettings& friction = scene.settings.friction;
@@ -211,8 +197,10 @@ void writeFile(const std::string& path, const std::string& text, const char* wha
 }
 
 void runScene(const RunOptions& opt) {
-  const SceneDesc scene = loadWithOverrides(opt);
-  std::unique_ptr<World> world = instantiate(scene);
+  // Scenes and --sampler may name every sampler of the tool ("gl" included).
+  const FrictionProviders providers = frictionProviders();
+  const SceneDesc scene = loadWithOverrides(opt, providers);
+  std::unique_ptr<World> world = instantiate(scene, {providers});
   const int64_t steps = stepCount(opt, scene.settings.dt);
   // Step 0 is the initial state; then every K steps.
   std::string csv = "step,time,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n";

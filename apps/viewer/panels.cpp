@@ -6,7 +6,6 @@
 #include <cstring>
 
 #include "asperity/error.hpp"
-#include "asperity/scene/friction_registry.hpp"
 #include "viewer.hpp"
 
 namespace asperity::viewer {
@@ -98,10 +97,10 @@ void Viewer::settingsPanel() {
   // The friction provider.
   const std::string current = world_->frictionProvider().name();
   if (ImGui::BeginCombo("sampler", current.c_str())) {
-    for (const std::string& name : frictionProviderNames()) {
+    for (const std::string& name : providers_.names()) {
       if (ImGui::Selectable(name.c_str(), name == current) && name != current) {
         try {
-          world_->setFrictionProvider(makeFrictionProvider(name));
+          world_->setFrictionProvider(providers_.make(name));
         } catch (const Error& e) {
           message_ = e.what();
         }

@@ -14,7 +14,6 @@
 #include "asperity/error.hpp"
 #include "asperity/gl/context.hpp"
 #include "asperity/sampler/gl_patch_sampler.hpp"
-#include "asperity/scene/friction_registry.hpp"
 
 namespace asperity::viewer {
 namespace {
@@ -68,11 +67,10 @@ Viewer::Viewer(const ViewerOptions& options) : options_(options), playing_(optio
   ro.shadow_taps = options.shadow_taps > 0 ? options.shadow_taps : (software ? 1 : 4);
   renderer_ = std::make_unique<render::Renderer>(ro);
   // The "gl" patch sampler draws with the window's context (it restores the state it changes).
-  registerFrictionProvider("gl", [] {
-    GlSamplerOptions gl_options;
-    gl_options.use_current_context = true;
-    return std::make_unique<GlPatchSampler>(gl_options);
-  });
+  providers_ = FrictionProviders::builtIn();
+  GlSamplerOptions gl_options;
+  gl_options.use_current_context = true;
+  addGlPatchSampler(providers_, gl_options);
   preview_ = std::make_unique<SurfacePreview>();
   view_options_.debug.layers = kLayerContacts;
   loadScene(options.scene);
@@ -95,7 +93,7 @@ void Viewer::loadScene(const std::string& path) {
   try {
     SceneDesc scene = asperity::loadScene(path);
     if (!options_.sampler.empty()) scene.sampler = options_.sampler;
-    std::unique_ptr<World> world = instantiate(scene);
+    std::unique_ptr<World> world = instantiate(scene, {providers_});
     scene_ = std::move(scene);
     world_ = std::move(world);
     scene_path_ = open_path_ = path;
@@ -122,9 +120,9 @@ void Viewer::reset() {
   // Re-instantiate from the loaded description, keeping the camera and live settings.
   const WorldSettings settings = world_->settings();
   const std::string sampler = world_->frictionProvider().name();
-  world_ = instantiate(scene_);
+  world_ = instantiate(scene_, {providers_});
   world_->settings() = settings;
-  if (hasFrictionProvider(sampler)) world_->setFrictionProvider(makeFrictionProvider(sampler));
+  if (providers_.has(sampler)) world_->setFrictionProvider(providers_.make(sampler));
   view_ = render::WorldView();
   spring_ = -1;
   dragged_ = kNoBody;

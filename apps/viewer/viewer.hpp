@@ -77,6 +77,7 @@ class Viewer {
   std::unique_ptr<SurfacePreview> preview_;
 
   SceneDesc scene_;
+  FrictionProviders providers_;  // the samplers scenes and the panel may pick ("gl" included)
   std::unique_ptr<World> world_;
   std::string scene_path_;
   std::string open_path_;  // the "open scene" text field

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "asperity/error.hpp"
-#include "asperity/scene/friction_registry.hpp"
+#include "asperity/scene/friction_providers.hpp"
 #include "world_state.hpp"
 #ifdef ASPERITY_HAVE_RENDER
 #include "asperity/sampler/gl_patch_sampler.hpp"
@@ -40,9 +40,10 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
                                    std::optional<std::string> frame, std::optional<int> directions,
                                    std::optional<double> patch_width,
                                    std::optional<int> patch_resolution) {
+  // Scenes may ask for the core samplers and, when built with OpenGL, "gl".
+  InstantiateOptions options;
 #ifdef ASPERITY_HAVE_RENDER
-  // Scenes may ask for the OpenGL patch sampler ("gl").
-  registerGlPatchSampler();
+  addGlPatchSampler(options.providers);
 #endif
   auto w = std::make_unique<PyWorld>();
   w->scene = sceneFrom(scene_arg).desc;
@@ -50,9 +51,9 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
   if (friction) s.limit_surface = lookup(kFrictionNames, *friction, "friction");
   if (frame) s.frame_mode = lookup(kFrameNames, *frame, "frame");
   if (sampler) {
-    if (!hasFrictionProvider(*sampler)) {
+    if (!options.providers.has(*sampler)) {
       try {
-        makeFrictionProvider(*sampler);
+        options.providers.make(*sampler);
       } catch (const Error& e) {
         throwValue(std::string("sampler: ") + e.what());
       }
@@ -68,7 +69,7 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
   if (directions) s.friction.directions = *directions;
   if (patch_width) s.friction.patch_width = *patch_width;
   if (patch_resolution) s.friction.patch_resolution = *patch_resolution;
-  w->world = instantiate(w->scene);
+  w->world = instantiate(w->scene, options);
   for (const Body& b : w->world->bodies())
     w->origin_offsets.push_back(b.com_offset.rotation.conjugate() * b.com_offset.position);
   return w;
@@ -104,50 +105,9 @@ void addLoad(PyWorld& w, const std::string& body, LoadDesc::Kind kind, const Vec
   w.world->addLoad(load);
 }
 
-}  // namespace
-
-void bindWorld(py::module_& m) {
-  py::class_<PyWorld>(m, "World",
-                      "A simulation world built from a scene (a path, a dict or an "
-                      "asperity.Scene).\n\nKeyword overrides match `asperity run`: sampler "
-                      "(constant, cone, cpu, gl), friction (coulomb, box, polygon), frame "
-                      "(world, body, auto, texture), directions N, patch_width w (m), "
-                      "patch_resolution R. Steps run on the calling thread.")
-      .def(py::init(&makeWorld), py::arg("scene"), py::kw_only(), py::arg("sampler") = py::none(),
-           py::arg("friction") = py::none(), py::arg("frame") = py::none(),
-           py::arg("directions") = py::none(), py::arg("patch_width") = py::none(),
-           py::arg("patch_resolution") = py::none())
-      .def(
-          "step",
-          [](PyWorld& w, int64_t n) {
-            if (n < 0) throwValue("step: n must be >= 0, got " + std::to_string(n));
-            // Other Python threads run while this world steps.
-            py::gil_scoped_release release;
-            for (int64_t i = 0; i < n; ++i) w.world->step();
-          },
-          py::arg("n") = 1, "Advances the world by n steps of dt (the GIL is released).")
-      .def_property_readonly(
-          "time", [](const PyWorld& w) { return w.world->time(); }, "Simulated time (s).")
-      .def_property_readonly(
-          "step_count", [](const PyWorld& w) { return w.world->stepCount(); }, "Steps taken.")
-      .def_property_readonly(
-          "dt", [](const PyWorld& w) { return w.world->settings().dt; }, "Time step (s).")
-      .def_property_readonly(
-          "body_names",
-          [](const PyWorld& w) {
-            py::list names;
-            for (const Body& b : w.world->bodies()) names.append(b.name);
-            return names;
-          },
-          "Names of the bodies in scene order (the rows of the state arrays).")
-      .def_property("positions", &positions, &setPositions,
-                    "(B, 3) float64: origin of each body's frame as the scene wrote it (m).")
-      .def_property("orientations", &orientations, &setOrientations,
-                    "(B, 4) float64: unit quaternion w, x, y, z of each body's frame.")
-      .def_property("linear_velocities", &linearVelocities, &setLinearVelocities,
-                    "(B, 3) float64: velocity of each body frame's origin (m/s).")
-      .def_property("angular_velocities", &angularVelocities, &setAngularVelocities,
-                    "(B, 3) float64: angular velocity, world frame (rad/s).")
+// The world's hash, contacts and loads on named bodies.
+void bindWorldActions(py::class_<PyWorld>& world) {
+  world
       .def(
           "state_hash",
           [](const PyWorld& w) {
@@ -195,6 +155,55 @@ void bindWorld(py::module_& m) {
         return "<asperity.World t=" + std::to_string(w.world->time()) + " s, " +
                std::to_string(w.world->bodies().size()) + " bodies>";
       });
+}
+
+}  // namespace
+
+void bindWorld(py::module_& m) {
+  py::class_<PyWorld> world(m, "World",
+                            "A simulation world built from a scene (a path, a dict or an "
+                            "asperity.Scene).\n\nKeyword overrides match `asperity run`: sampler "
+                            "(constant, cone, cpu, gl), friction (coulomb, box, polygon), frame "
+                            "(world, body, auto, texture), directions N, patch_width w (m), "
+                            "patch_resolution R. Steps run on the calling thread.");
+  // Construction, stepping and the state arrays.
+  world
+      .def(py::init(&makeWorld), py::arg("scene"), py::kw_only(), py::arg("sampler") = py::none(),
+           py::arg("friction") = py::none(), py::arg("frame") = py::none(),
+           py::arg("directions") = py::none(), py::arg("patch_width") = py::none(),
+           py::arg("patch_resolution") = py::none())
+      .def(
+          "step",
+          [](PyWorld& w, int64_t n) {
+            if (n < 0) throwValue("step: n must be >= 0, got " + std::to_string(n));
+            // Other Python threads run while this world steps.
+            py::gil_scoped_release release;
+            for (int64_t i = 0; i < n; ++i) w.world->step();
+          },
+          py::arg("n") = 1, "Advances the world by n steps of dt (the GIL is released).")
+      .def_property_readonly(
+          "time", [](const PyWorld& w) { return w.world->time(); }, "Simulated time (s).")
+      .def_property_readonly(
+          "step_count", [](const PyWorld& w) { return w.world->stepCount(); }, "Steps taken.")
+      .def_property_readonly(
+          "dt", [](const PyWorld& w) { return w.world->settings().dt; }, "Time step (s).")
+      .def_property_readonly(
+          "body_names",
+          [](const PyWorld& w) {
+            py::list names;
+            for (const Body& b : w.world->bodies()) names.append(b.name);
+            return names;
+          },
+          "Names of the bodies in scene order (the rows of the state arrays).")
+      .def_property("positions", &positions, &setPositions,
+                    "(B, 3) float64: origin of each body's frame as the scene wrote it (m).")
+      .def_property("orientations", &orientations, &setOrientations,
+                    "(B, 4) float64: unit quaternion w, x, y, z of each body's frame.")
+      .def_property("linear_velocities", &linearVelocities, &setLinearVelocities,
+                    "(B, 3) float64: velocity of each body frame's origin (m/s).")
+      .def_property("angular_velocities", &angularVelocities, &setAngularVelocities,
+                    "(B, 3) float64: angular velocity, world frame (rad/s).");
+  bindWorldActions(world);
 }
 
 }  // namespace asperity::python

@@ -4,7 +4,6 @@
 #include <map>
 
 #include "asperity/error.hpp"
-#include "asperity/scene/friction_registry.hpp"
 #include "asperity/scene/scene.hpp"
 #include "asperity/texture/generators.hpp"
 #include "asperity/texture/map_inspect.hpp"
@@ -168,10 +167,10 @@ BodyId bodyId(const World& world, const std::string& name, const std::string& wh
 
 }  // namespace
 
-std::unique_ptr<World> instantiate(const SceneDesc& scene) {
+std::unique_ptr<World> instantiate(const SceneDesc& scene, const InstantiateOptions& options) {
   auto world = std::make_unique<World>(scene.settings);
-  world->setFrictionProvider(
-      withContext(scene, "/settings/sampler", [&] { return makeFrictionProvider(scene.sampler); }));
+  world->setFrictionProvider(withContext(scene, "/settings/sampler",
+                                         [&] { return options.providers.make(scene.sampler); }));
   // Bodies, with equal surfaces and meshes sharing one resolved copy.
   scene::ResourceCache cache(scene.base_dir);
   for (size_t i = 0; i < scene.bodies.size(); ++i) {

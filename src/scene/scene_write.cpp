@@ -129,6 +129,7 @@ json settingsToJson(const SceneDesc& scene) {
   const FrictionSettings& f = s.friction;
   return {{"dt", s.dt},
           {"iterations", s.iterations},
+          {"substeps", s.substeps},
           {"gravity", toJson(s.gravity)},
           {"friction", enumName(s.limit_surface, kLimitSurfaceNames)},
           {"frame", enumName(s.frame_mode, kFrameModeNames)},

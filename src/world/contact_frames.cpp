@@ -61,7 +61,7 @@ void World::computeFrames() {
 void World::alignFramesWithSliding() {
   // A few frictionless PGS iterations predict each contact's sliding velocity (SPEC 5, auto).
   solver_->begin(bodies_, solverSettings());
-  solver_->setJoints(solverJoints());
+  solver_->setJoints(solverJoints(time_, settings_.dt));
   solver_->setContacts(contacts_, false);
   solver_->iterate(settings_.auto_frame_iterations);
   for (Contact& c : contacts_) {

@@ -18,7 +18,8 @@ Quat rotate(const Quat& q, const Vec3& w, double dt) {
 }  // namespace
 
 void World::integrate() {
-  const double dt = settings_.dt;
+  // One sub-step's time (the whole step without sub-steps).
+  const double dt = substepDt();
   for (size_t i = 0; i < bodies_.size(); ++i) {
     Body& b = bodies_[i];
     if (b.type == BodyType::Static) continue;

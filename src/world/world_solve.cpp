@@ -2,6 +2,7 @@
 #include <algorithm>
 
 #include "asperity/collision/collision_detector.hpp"
+#include "asperity/error.hpp"
 #include "asperity/world/world.hpp"
 
 namespace asperity {
@@ -65,7 +66,7 @@ void World::computeFriction() {
 
 SolverSettings World::solverSettings() const {
   SolverSettings s;
-  s.dt = settings_.dt;
+  s.dt = substepDt();
   s.limit_surface = settings_.limit_surface;
   s.coulomb_mu = settings_.friction.mu0;  // SPEC 4: Coulomb uses mu0 alone
   s.baumgarte = settings_.baumgarte;
@@ -75,10 +76,9 @@ SolverSettings World::solverSettings() const {
   return s;
 }
 
-std::span<const SolverJoint> World::solverJoints() {
+std::span<const SolverJoint> World::solverJoints(double t, double dt) {
   // Anchors and axes move from the descriptions' body frames to the centre-of-mass frames.
   solver_joints_.resize(joints_.size());
-  const double dt = settings_.dt;
   for (size_t i = 0; i < joints_.size(); ++i) {
     const JointDesc& j = joints_[i];
     const Body& a = bodies_[j.body_a];
@@ -92,19 +92,93 @@ std::span<const SolverJoint> World::solverJoints() {
     s.axis_a = a.com_offset.rotation.conjugate() * j.axis_a;
     s.axis_b = b.com_offset.rotation.conjugate() * j.axis_b;
     s.rest_rotation = joint_rest_rotation_[i];
-    // Distance: the length now and its rate over this step (the worm's muscles).
-    s.length = distanceJointLength(j, time_);
-    s.length_rate = (distanceJointLength(j, time_ + dt) - s.length) / dt;
+    // Distance: the length at t and its rate over the solve's dt (the worm's muscles).
+    s.length = distanceJointLength(j, t);
+    s.length_rate = (distanceJointLength(j, t + dt) - s.length) / dt;
   }
   return solver_joints_;
 }
 
-void World::solve() {
+void World::solveOnce(double t, double h) {
   solver_->begin(bodies_, solverSettings());
-  solver_->setJoints(solverJoints());
+  solver_->setJoints(solverJoints(t, h));
   solver_->setContacts(contacts_, true);
   solver_->iterate(settings_.iterations);
   solver_->finish(bodies_, contacts_);
+}
+
+void World::solve() {
+  if (settings_.substeps < 1) throw Error("world settings: substeps must be >= 1");
+  if (settings_.substeps == 1) {
+    solveOnce(time_, settings_.dt);
+  } else {
+    solveSubsteps();
+  }
+}
+
+void World::moveContacts(std::span<const Contact> base, std::span<const Transform> start) {
+  // Each contact's witness point rides on both bodies (rigidly from the poses at collision);
+  // the depth changes by their relative motion along the fixed normal (n from B to A).
+  for (size_t i = 0; i < base.size(); ++i) {
+    const Contact& c0 = base[i];
+    auto carried = [&](BodyId id) {
+      const Transform& s = start[id];
+      const Transform& now = bodies_[id].pose;
+      return Vec3(now.position + now.rotation * (s.rotation.conjugate() * (c0.point - s.position)));
+    };
+    const Vec3 pa = carried(c0.body_a), pb = carried(c0.body_b);
+    Contact& c = contacts_[i];
+    c.point = 0.5 * (pa + pb);
+    c.phi = c0.phi - c0.normal.dot(pa - pb);
+  }
+}
+
+void World::solveSubsteps() {
+  // Sub-stepping: `substeps` solves of h = dt / substeps on the one set of contacts, positions
+  // integrated between them (the last by the integrate stage). Smaller steps leave PGS less to
+  // converge per solve: light links between heavy ends stop creeping (tests/world/
+  // chain_rod_test.cpp). The drivers gave the whole step's acceleration; each sub-step gets
+  // its share (impulses and the gyroscopic step stay in the first).
+  const int n = settings_.substeps;
+  const double h = substepDt();
+  std::vector<Vec3> dv(bodies_.size(), Vec3::Zero()), dw(bodies_.size(), Vec3::Zero());
+  std::vector<Transform> start(bodies_.size());
+  for (size_t i = 0; i < bodies_.size(); ++i) {
+    Body& b = bodies_[i];
+    start[i] = b.pose;
+    if (!b.isDynamic()) continue;
+    dv[i] = h * (settings_.gravity + b.inverse_mass * b.force);
+    dw[i] = h * (b.inverseInertiaWorld() * b.torque);
+    b.linear_velocity -= (n - 1) * dv[i];
+    b.angular_velocity -= (n - 1) * dw[i];
+  }
+  const std::vector<Contact> base = contacts_;
+  // (lambda_n, lambda_t, lambda_b) summed over the sub-steps.
+  std::vector<Vec3> impulse(contacts_.size(), Vec3::Zero());
+  for (int k = 0; k < n; ++k) {
+    // Later sub-steps: their share of the acceleration, the contacts carried along.
+    if (k > 0) {
+      integrate();
+      for (size_t i = 0; i < bodies_.size(); ++i) {
+        if (!bodies_[i].isDynamic()) continue;
+        bodies_[i].linear_velocity += dv[i];
+        bodies_[i].angular_velocity += dw[i];
+      }
+      moveContacts(base, start);
+    }
+    solveOnce(time_ + k * h, h);
+    for (size_t i = 0; i < contacts_.size(); ++i) {
+      impulse[i] += Vec3(contacts_[i].lambda_n, contacts_[i].lambda_t, contacts_[i].lambda_b);
+    }
+  }
+  // Contacts report the collision's geometry and the step's impulses.
+  for (size_t i = 0; i < contacts_.size(); ++i) {
+    contacts_[i].point = base[i].point;
+    contacts_[i].phi = base[i].phi;
+    contacts_[i].lambda_n = impulse[i].x();
+    contacts_[i].lambda_t = impulse[i].y();
+    contacts_[i].lambda_b = impulse[i].z();
+  }
 }
 
 }  // namespace asperity

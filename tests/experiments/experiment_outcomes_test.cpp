@@ -1,6 +1,6 @@
 // The paper's experiments (SPEC 7): each scene in scenes/ runs headless through the scene
 // library and must show what Sec. 5 shows. Numbers are asserted, not just pass flags.
-#include "experiment_outcomes.hpp"
+#include "experiments/experiment_outcomes.hpp"
 
 #include <gtest/gtest.h>
 

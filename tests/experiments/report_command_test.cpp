@@ -74,5 +74,39 @@ TEST(BenchCommand, MissingSceneIsAnErrorNamingTheFile) {
   EXPECT_NE(r.err.find("no_such_scene.json"), std::string::npos) << r.err;
 }
 
+TEST(BenchCommand, UnknownSamplerIsAnErrorListingTheKnownOnes) {
+  const auto r = test::runCli(
+      {"bench", test::sourcePath("scenes/sawtooth_plane.json"), "--sampler", "velvet"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--sampler: unknown friction sampler \"velvet\""), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("cpu"), std::string::npos) << r.err;
+}
+
+#ifdef ASPERITY_HAVE_GL
+TEST(BenchCommand, OpenGlSamplerRunsTheScene) {
+  // Every subcommand offers "gl": the row says which sampler ran and found the box's contacts.
+  const std::string json = test::tempDir("bench_gl") + "/table.json";
+  const auto r = test::runCli(
+      {"bench", test::sourcePath("scenes/sawtooth_plane.json"), "--sampler", "gl", "--json", json});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(readFile(json));
+  ASSERT_EQ(j.size(), 1u);
+  EXPECT_EQ(j[0]["ours"]["sampler"], "gl");
+  EXPECT_GT(j[0]["ours"]["contacts"].get<double>(), 0.0);
+  EXPECT_GT(j[0]["ours"]["patch_ms"].get<double>(), 0.0);
+}
+
+TEST(ReportCommand, OpenGlSamplerRunsTheExperiments) {
+  const std::string dir = test::tempDir("report_gl");
+  const auto r = test::runCli({"report", "--out", dir, "--only", "sawtooth_plane", "--no-frames",
+                               "--scenes", test::sourcePath("scenes"), "--sampler", "gl"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string html = readFile(dir + "/report/index.html");
+  EXPECT_NE(html.find("<td>gl</td>"), std::string::npos);
+  EXPECT_NE(r.out.find("1 of 1 experiments reproduced"), std::string::npos) << r.out;
+}
+#endif
+
 }  // namespace
 }  // namespace asperity

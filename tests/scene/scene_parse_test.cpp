@@ -116,6 +116,8 @@ TEST(SceneParse, SettingsRanges) {
             "FILE: /settings/dt: must be a number in (0, 1], got -0.01");
   EXPECT_EQ(loadError(R"({"settings": {"iterations": 0}})"),
             "FILE: /settings/iterations: must be an integer in [1, 10000], got 0");
+  EXPECT_EQ(loadError(R"({"settings": {"substeps": 0}})"),
+            "FILE: /settings/substeps: must be an integer in [1, 1000], got 0");
   EXPECT_EQ(loadError(R"({"settings": {"directions": 3}})"),
             "FILE: /settings/directions: must be an integer in [4, 64], got 3");
   EXPECT_EQ(loadError(R"({"settings": {"patch_width": 0}})"),

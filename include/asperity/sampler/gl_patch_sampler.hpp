@@ -17,6 +17,7 @@
 
 #include "asperity/sampler/friction_provider.hpp"
 #include "asperity/sampler/patch_sampler.hpp"
+#include "asperity/scene/friction_providers.hpp"
 
 namespace asperity {
 
@@ -54,8 +55,8 @@ class GlPatchSampler : public FrictionProvider {
   std::unique_ptr<Impl> impl_;
 };
 
-// Registers "gl" (a GlPatchSampler with default options) with the scene's friction provider
-// registry (scene/friction_registry.hpp).
-void registerGlPatchSampler();
+// Adds "gl" (a GlPatchSampler with these options) to a table of friction providers
+// (scene/friction_providers.hpp), e.g. the one given to instantiate().
+void addGlPatchSampler(FrictionProviders& providers, const GlSamplerOptions& options = {});
 
 }  // namespace asperity

@@ -15,6 +15,7 @@
 #include "asperity/dynamics/body.hpp"
 #include "asperity/dynamics/driver.hpp"
 #include "asperity/dynamics/joint.hpp"
+#include "asperity/scene/friction_providers.hpp"
 #include "asperity/world/world.hpp"
 
 namespace asperity {
@@ -58,7 +59,7 @@ struct SceneCamera {
 
 struct SceneDesc {
   WorldSettings settings;
-  std::string sampler = "cone";  // friction provider (frictionProviderNames())
+  std::string sampler = "cone";  // friction provider (InstantiateOptions::providers)
   std::vector<BodyDesc> bodies;  // shapes' normal maps unresolved (files / generator specs)
   std::vector<SceneJoint> joints;
   std::vector<SceneSpring> springs;
@@ -83,7 +84,11 @@ void saveScene(const SceneDesc& scene, const std::string& path);
 
 // Builds a World: resolves normal maps (PNG files, generators; equal surfaces share one
 // NormalMap), masks and meshes, creates bodies, joints, springs and loads, and installs the
-// friction provider `scene.sampler`. Throws asperity::Error naming the file and culprit.
-std::unique_ptr<World> instantiate(const SceneDesc& scene);
+// friction provider `scene.sampler` from options.providers. Throws asperity::Error naming the
+// file and culprit.
+struct InstantiateOptions {
+  FrictionProviders providers = FrictionProviders::builtIn();  // the names scenes may ask for
+};
+std::unique_ptr<World> instantiate(const SceneDesc& scene, const InstantiateOptions& options = {});
 
 }  // namespace asperity

@@ -35,8 +35,11 @@ enum class FrameMode {
 };
 
 struct WorldSettings {
-  double dt = 0.01;  // s
-  int iterations = 20;
+  double dt = 0.01;     // s
+  int iterations = 20;  // PGS iterations per solve (per sub-step)
+  // Solves per step, each over dt / substeps with the step's contacts carried along by the
+  // bodies' motion (docs/step.md). 1: one solve per step.
+  int substeps = 1;
   Vec3 gravity = Vec3(0.0, 0.0, -9.81);  // m/s^2
   LimitSurfaceKind limit_surface = LimitSurfaceKind::Box;
   FrameMode frame_mode = FrameMode::World;
@@ -132,7 +135,11 @@ class World {
   void alignFramesWithSliding();
   void checkBody(BodyId id, const std::string& what) const;
   SolverSettings solverSettings() const;
-  std::span<const SolverJoint> solverJoints();
+  std::span<const SolverJoint> solverJoints(double t, double h);
+  double substepDt() const { return settings_.dt / settings_.substeps; }
+  void solveOnce(double t, double h);
+  void solveSubsteps();
+  void moveContacts(std::span<const Contact> base, std::span<const Transform> start);
   double automaticSlop() const;
 
   WorldSettings settings_;

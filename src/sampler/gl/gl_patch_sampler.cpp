@@ -12,7 +12,7 @@
 #include "asperity/error.hpp"
 #include "asperity/friction/directions.hpp"
 #include "asperity/gl/context.hpp"
-#include "asperity/scene/friction_registry.hpp"
+#include "asperity/scene/friction_providers.hpp"
 #include "sampler/gl/gl_patch_resources.hpp"
 #include "sampler/patch_common.hpp"
 #include "sampler/patch_triangles.hpp"
@@ -332,8 +332,8 @@ void GlPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span
   im.patch_ms = msSince(start) - im.averaging_ms;
 }
 
-void registerGlPatchSampler() {
-  registerFrictionProvider("gl", [] { return std::make_unique<GlPatchSampler>(); });
+void addGlPatchSampler(FrictionProviders& providers, const GlSamplerOptions& options) {
+  providers.add("gl", [options] { return std::make_unique<GlPatchSampler>(options); });
 }
 
 }  // namespace asperity

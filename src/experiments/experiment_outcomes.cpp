@@ -83,7 +83,7 @@ Recording simulate(const std::string& file, double seconds, const RunOptions& op
   if (!options.sampler.empty()) scene.sampler = options.sampler;
   if (frame) scene.settings.frame_mode = *frame;
   Recording rec;
-  rec.world = instantiate(scene);
+  rec.world = instantiate(scene, InstantiateOptions{options.providers});
   rec.profile = startProfile(file, scene, seconds);
   // Which bodies: the named ones (checked), else every dynamic body.
   std::vector<BodyId> ids;
@@ -115,10 +115,11 @@ Recording simulate(const std::string& file, double seconds, const RunOptions& op
   return rec;
 }
 
-RunProfile profileScene(const std::string& path, double seconds, const std::string& sampler) {
+RunProfile profileScene(const std::string& path, double seconds, const std::string& sampler,
+                        const FrictionProviders& providers) {
   SceneDesc scene = loadScene(path);
   if (!sampler.empty()) scene.sampler = sampler;
-  std::unique_ptr<World> world = instantiate(scene);
+  std::unique_ptr<World> world = instantiate(scene, InstantiateOptions{providers});
   RunProfile p = startProfile(path, scene, seconds);
   const auto start = std::chrono::steady_clock::now();
   for (int64_t i = 0; i < p.steps; ++i) {
@@ -152,7 +153,8 @@ std::vector<std::string> catalogScenePaths(const std::string& scenes_dir) {
   return paths;
 }
 
-TableRow benchScene(const std::string& path, const std::string& sampler) {
+TableRow benchScene(const std::string& path, const std::string& sampler,
+                    const FrictionProviders& providers) {
   // The experiment that owns this file name gives the duration, title and paper row.
   const std::string file = std::filesystem::path(path).filename().string();
   TableRow row;
@@ -165,7 +167,7 @@ TableRow benchScene(const std::string& path, const std::string& sampler) {
         row.paper = run.paper;
         seconds = run.seconds;
       }
-  row.ours = profileScene(path, seconds, sampler);
+  row.ours = profileScene(path, seconds, sampler, providers);
   return row;
 }
 

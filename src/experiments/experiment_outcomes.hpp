@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "asperity/scene/friction_providers.hpp"
 #include "asperity/world/world.hpp"
 
 namespace asperity::experiments {
@@ -85,6 +86,8 @@ struct RunOptions {
   std::string scenes_dir = "scenes";  // folder holding the experiments' scene files
   std::string sampler;                // friction sampler override ("" = the scenes')
   int record_every = 1;               // steps between recorded samples of the plots
+  // The samplers the scenes and `sampler` may name (a front end adds "gl" when it has it).
+  FrictionProviders providers = FrictionProviders::builtIn();
 };
 
 // A scene file with the simulated time its outcome needs, and the paper's Table 1 row.
@@ -130,7 +133,8 @@ Recording simulate(const std::string& file, double seconds, const RunOptions& op
                    std::optional<FrameMode> frame = std::nullopt);
 
 // Runs one scene for `seconds` (no recording) and returns its per-step profile.
-RunProfile profileScene(const std::string& path, double seconds, const std::string& sampler);
+RunProfile profileScene(const std::string& path, double seconds, const std::string& sampler,
+                        const FrictionProviders& providers = FrictionProviders::builtIn());
 
 // One row of our Table 1: a scene's parameters and per-step timings beside the paper's.
 struct TableRow {
@@ -139,7 +143,8 @@ struct TableRow {
   std::optional<PaperRow> paper;
 };
 // Runs a scene file as Table 1 does: for its experiment's duration (1 s if it belongs to none).
-TableRow benchScene(const std::string& path, const std::string& sampler);
+TableRow benchScene(const std::string& path, const std::string& sampler,
+                    const FrictionProviders& providers = FrictionProviders::builtIn());
 // Every experiment scene of the catalog, from scenes_dir.
 std::vector<std::string> catalogScenePaths(const std::string& scenes_dir);
 
