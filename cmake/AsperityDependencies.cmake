@@ -6,6 +6,8 @@ find_package(CLI11 REQUIRED)
 
 find_package(meshoptimizer REQUIRED)
 find_package(tinyobjloader REQUIRED)
+# glTF, FBX, COLLADA and 3DS meshes with their materials (Open Asset Import Library).
+find_package(assimp 5 REQUIRED)
 # oneTBB runs the samples of `asperity sweep` on a pool of threads.
 find_package(TBB REQUIRED)
 find_package(PkgConfig REQUIRED)

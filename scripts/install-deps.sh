@@ -9,6 +9,8 @@ packages=(
   # core library
   libeigen3-dev libstb-dev nlohmann-json3-dev libcli11-dev libbullet-dev
   libmeshoptimizer-dev libtinyobjloader-dev
+  # meshes and their materials from glTF, FBX, COLLADA and 3DS files
+  libassimp-dev
   # ensembles of runs on a pool of threads
   libtbb-dev
   # the Python module, its tests, examples and cluster runs (Debian's /usr/bin/python3)

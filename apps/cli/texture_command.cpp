@@ -1,11 +1,19 @@
 // `asperity texture`: writes any procedural generator's normal map to a PNG, or lists the
 // generators and their parameters. Generator parameters are dynamic (`--sx 0.1`), collected
 // from CLI11's extras and checked by generateNormalMap.
+#include <cstdio>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <memory>
 
+#include <nlohmann/json.hpp>
+
 #include "asperity/error.hpp"
+#include "asperity/friction/limit_surface.hpp"
+#include "asperity/friction/patch_cone.hpp"
 #include "asperity/texture/generators.hpp"
+#include "asperity/texture/map_inspect.hpp"
 #include "asperity/texture/png_io.hpp"
 #include "cli_common.hpp"
 
@@ -84,6 +92,43 @@ void runTexture(const TextureOptions& opt, const std::vector<std::string>& extra
   saveNormalMapPng(map, opt.out, png);
 }
 
+// `texture inspect FILE [--json]`: size, bits, invalid texels, green verdict, slope, box cone.
+void runInspect(const std::string& file, bool json) {
+  // Decoded as OpenGL; the verdict says whether DirectX fits better.
+  NormalMapStats stats;
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw Error("texture inspect: cannot open '" + file + "'");
+  const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in),
+                                   std::istreambuf_iterator<char>()};
+  const NormalMap map = decodeNormalMap(bytes, file, GreenConvention::OpenGL, 1.0, &stats);
+  const GreenFit fit = judgeGreenConvention(map);
+  const double slope = meanSlope(map);
+  // The whole-texture box cone against a flat partner (as `asperity cone FILE`).
+  const BoxLimit box = BoxLimit::fromDirectional(flatPatchCone(nullptr, map, PatchConeOptions{}));
+  if (json) {
+    nlohmann::ordered_json j;
+    j["width"] = map.width();
+    j["height"] = map.height();
+    j["bits"] = stats.bits;
+    j["invalid_fraction"] = stats.invalidFraction();
+    j["convention"] = verdictName(fit.verdict);
+    j["mean_slope"] = slope;
+    j["box"] = {
+        {"+t", box.mu_pos_t}, {"+b", box.mu_pos_b}, {"-t", box.mu_neg_t}, {"-b", box.mu_neg_b}};
+    std::cout << j.dump(2) << '\n';
+    return;
+  }
+  char line[256];
+  std::snprintf(line, sizeof(line),
+                "%s\nsize: %d x %d, %d bits\ninvalid texels: %.2f %% (treated as flat)\n"
+                "convention: %s (RMS curl as OpenGL %.4g, as DirectX %.4g)\nmean slope: %.4f\n"
+                "box: +t %.4f  +b %.4f  -t %.4f  -b %.4f\n",
+                file.c_str(), map.width(), map.height(), stats.bits,
+                100.0 * stats.invalidFraction(), verdictName(fit.verdict), fit.curl_opengl,
+                fit.curl_directx, slope, box.mu_pos_t, box.mu_pos_b, box.mu_neg_t, box.mu_neg_b);
+  std::cout << line;
+}
+
 }  // namespace
 
 void registerTextureCommand(CLI::App& app) {
@@ -107,7 +152,21 @@ void registerTextureCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_flag("--directx", opt->directx, "Write green as -bitangent (DirectX convention)");
 
-  sub->callback([opt, sub]() { runTexture(*opt, sub->remaining()); });
+  // `texture inspect FILE [--json]` reads a map instead of writing one.
+  auto inspect_file = std::make_shared<std::string>();
+  auto inspect_json = std::make_shared<bool>(false);
+  CLI::App* inspect = sub->add_subcommand("inspect",
+                                          "Report a normal map (PNG, JPEG): size, bits, texels "
+                                          "that are not normals, the green convention "
+                                          "its slopes fit, mean slope, box cone");
+  inspect->add_option("file", *inspect_file, "Normal map image (PNG, JPEG)")->required();
+  inspect->add_flag("--json", *inspect_json, "Print JSON");
+  inspect->callback([inspect_file, inspect_json]() { runInspect(*inspect_file, *inspect_json); });
+
+  sub->callback([opt, sub, inspect]() {
+    if (inspect->parsed()) return;
+    runTexture(*opt, sub->remaining());
+  });
 }
 
 }  // namespace asperity::cli

@@ -101,12 +101,14 @@ Surface parseSurface(JsonReader r, const std::string& base_dir) {
   return s;
 }
 
-// The mesh of a convex hull or triangle mesh shape: OBJ file, scale, simplification target.
+// The mesh of a convex hull or triangle mesh shape: asset file, scale, simplification target,
+// node.
 SceneMesh parseMeshSource(JsonReader& r, const std::string& key, const std::string& base_dir) {
   SceneMesh m;
   m.file = existingFile(r, key, base_dir);
   m.scale = r.number("scale", m.scale, Range::positive(kHuge));
   m.simplify = r.integer("simplify", m.simplify, 0, 10000000);
+  m.node = r.string("node", m.node);
   return m;
 }
 

@@ -1,10 +1,12 @@
 // From a scene description to a World: resolve every surface's normal map and mask, every OBJ
 // mesh, then create bodies, joints, springs and loads, and install the friction provider.
+#include <iostream>
 #include <map>
 
 #include "asperity/error.hpp"
 #include "asperity/scene/scene.hpp"
 #include "asperity/texture/generators.hpp"
+#include "asperity/texture/map_inspect.hpp"
 #include "asperity/texture/png_io.hpp"
 #include "scene/scene_common.hpp"
 #include "scene/scene_resources.hpp"
@@ -50,6 +52,17 @@ GainMask loadGainMask(const std::string& path) {
   return mask;
 }
 
+// Warns when the map, read with the surface's `directx` setting, has slopes that clearly fit
+// the other green convention (map_inspect: the curl of the implied slope field).
+void warnGreenContradiction(const std::string& path, GreenConvention green, const NormalMap& map) {
+  if (judgeGreenConvention(map).verdict != GreenVerdict::DirectX) return;
+  const bool directx = green == GreenConvention::DirectX;
+  std::cerr << "asperity: warning: " << path
+            << ": the surface says \"directx\": " << (directx ? "true" : "false")
+            << " but the map's slopes fit the " << (directx ? "OpenGL" : "DirectX")
+            << " convention (asperity texture inspect)\n";
+}
+
 }  // namespace
 
 std::shared_ptr<const NormalMap> ResourceCache::normalMap(const Surface& surface) {
@@ -64,10 +77,11 @@ std::shared_ptr<const NormalMap> ResourceCache::normalMap(const Surface& surface
     return nullptr;
   auto& slot = normal_maps_[key];
   if (slot) return slot;
-  if (!surface.normal_map_file.empty())
-    slot = std::make_shared<const NormalMap>(
-        loadNormalMapPng(resolvePath(base_dir_, surface.normal_map_file), surface.green));
-  else
+  if (!surface.normal_map_file.empty()) {
+    const std::string path = resolvePath(base_dir_, surface.normal_map_file);
+    slot = std::make_shared<const NormalMap>(loadNormalMapPng(path, surface.green));
+    warnGreenContradiction(path, surface.green, *slot);
+  } else
     slot = std::make_shared<const NormalMap>(
         generateNormalMap(resolveGeneratorPaths(surface.generator, base_dir_)));
   return slot;
@@ -81,11 +95,13 @@ std::shared_ptr<const GainMask> ResourceCache::mask(const std::string& file) {
   return slot;
 }
 
-std::shared_ptr<const TriangleMeshData> ResourceCache::mesh(const SceneMesh& source) {
+std::shared_ptr<const ImportedAsset> ResourceCache::asset(const SceneMesh& source,
+                                                          GreenConvention green) {
   const std::string path = resolvePath(base_dir_, source.file);
   auto& slot =
-      meshes_[path + ":" + formatNumber(source.scale) + ":" + std::to_string(source.simplify)];
-  if (!slot) slot = loadSceneMesh(path, source);
+      assets_[path + ":" + formatNumber(source.scale) + ":" + std::to_string(source.simplify) +
+              ":" + source.node + (green == GreenConvention::DirectX ? ":directx" : ":opengl")];
+  if (!slot) slot = loadSceneMesh(path, source, green);
   return slot;
 }
 
@@ -104,7 +120,30 @@ auto withContext(const SceneDesc& scene, const std::string& pointer, F&& f) {
   }
 }
 
-// A body with its surfaces, masks and meshes resolved.
+// A body's asset meshes; their materials' normal maps fill surfaces that name none.
+BodyDesc resolveMeshes(const SceneDesc& scene, size_t index, scene::ResourceCache& cache,
+                       BodyDesc desc) {
+  const std::string body_ptr = "/bodies/" + std::to_string(index);
+  for (const SceneMesh& m : scene.meshes) {
+    if (m.body != index) continue;
+    if (m.shape >= desc.shapes.size())
+      throw Error("scene mesh refers to shape " + std::to_string(m.shape) + " of body \"" +
+                  desc.name + "\", which has " + std::to_string(desc.shapes.size()));
+    Shape& shape = desc.shapes[m.shape];
+    const bool hull = shape.type == ShapeType::ConvexHull;
+    const std::string ptr =
+        body_ptr + "/shapes/" + std::to_string(m.shape) + (hull ? "/mesh" : "/file");
+    const auto asset = withContext(scene, ptr, [&] { return cache.asset(m, shape.surface.green); });
+    shape.mesh = asset->mesh;
+    // The asset's own normal map when the surface names none (SPEC 10).
+    Surface& s = shape.surface;
+    if (!s.normal_map && s.normal_map_file.empty() && s.generator.name.empty())
+      s.normal_map = asset->material.normal_map;
+  }
+  return desc;
+}
+
+// Resolves a body's surfaces (normal maps and masks) and its asset meshes.
 BodyDesc resolveBody(const SceneDesc& scene, size_t index, scene::ResourceCache& cache) {
   BodyDesc desc = scene.bodies[index];
   const std::string body_ptr = "/bodies/" + std::to_string(index);
@@ -116,17 +155,7 @@ BodyDesc resolveBody(const SceneDesc& scene, size_t index, scene::ResourceCache&
     if (!s.mask)
       s.mask = withContext(scene, ptr + "/mask", [&] { return cache.mask(s.mask_file); });
   }
-  for (const SceneMesh& m : scene.meshes) {
-    if (m.body != index) continue;
-    if (m.shape >= desc.shapes.size())
-      throw Error("scene mesh refers to shape " + std::to_string(m.shape) + " of body \"" +
-                  desc.name + "\", which has " + std::to_string(desc.shapes.size()));
-    const bool hull = desc.shapes[m.shape].type == ShapeType::ConvexHull;
-    const std::string ptr =
-        body_ptr + "/shapes/" + std::to_string(m.shape) + (hull ? "/mesh" : "/file");
-    desc.shapes[m.shape].mesh = withContext(scene, ptr, [&] { return cache.mesh(m); });
-  }
-  return desc;
+  return resolveMeshes(scene, index, cache, std::move(desc));
 }
 
 // The id of a named body; the scene reader has checked the name, code-built scenes may not.

@@ -1,11 +1,12 @@
 // The files and generated data a scene refers to, loaded once each while a World is built:
-// equal surfaces share one NormalMap, equal OBJ references one mesh.
+// equal surfaces share one NormalMap, equal asset references one mesh and material.
 #pragma once
 
 #include <map>
 #include <memory>
 #include <string>
 
+#include "asperity/geometry/asset_import.hpp"
 #include "asperity/geometry/shape.hpp"
 #include "asperity/geometry/surface.hpp"
 #include "asperity/scene/scene.hpp"
@@ -20,18 +21,20 @@ class ResourceCache {
   std::shared_ptr<const NormalMap> normalMap(const Surface& surface);
   // The grey PNG mask; null for an empty name.
   std::shared_ptr<const GainMask> mask(const std::string& file);
-  // The OBJ mesh, scaled and simplified as the scene says.
-  std::shared_ptr<const TriangleMeshData> mesh(const SceneMesh& source);
+  // The asset (mesh and material), scaled and simplified as the scene says; a normal map in
+  // a format that does not fix its green convention is read with `green`.
+  std::shared_ptr<const ImportedAsset> asset(const SceneMesh& source, GreenConvention green);
 
  private:
   std::string base_dir_;
   std::map<std::string, std::shared_ptr<const NormalMap>> normal_maps_;
   std::map<std::string, std::shared_ptr<const GainMask>> masks_;
-  std::map<std::string, std::shared_ptr<const TriangleMeshData>> meshes_;
+  std::map<std::string, std::shared_ptr<const ImportedAsset>> assets_;
 };
 
-// Loads `path` (the resolved OBJ file of `source`), scales and simplifies it (mesh_io).
-std::shared_ptr<const TriangleMeshData> loadSceneMesh(const std::string& path,
-                                                      const SceneMesh& source);
+// Loads `path` (the resolved asset file of `source`, asset_import), scales it, picks its node
+// and simplifies its mesh (mesh_io).
+std::shared_ptr<const ImportedAsset> loadSceneMesh(const std::string& path, const SceneMesh& source,
+                                                   GreenConvention green);
 
 }  // namespace asperity::scene

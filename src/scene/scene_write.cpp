@@ -79,6 +79,7 @@ void meshToJson(const SceneDesc& scene, size_t body, size_t index, json& out) {
     out[hull ? "mesh" : "file"] = m->file;
     out["scale"] = m->scale;
     out["simplify"] = m->simplify;
+    if (!m->node.empty()) out["node"] = m->node;
   } else if (shape.mesh && !shape.mesh->source_file.empty()) {
     out[hull ? "mesh" : "file"] = shape.mesh->source_file;
   } else if (hull && shape.mesh) {

@@ -2,6 +2,7 @@
 // This file is the one place that compiles the stb_image and stb_image_write implementations.
 #include "texture/png_codec.hpp"
 
+#include <algorithm>
 #include <array>
 #include <climits>
 #include <cstdlib>
@@ -230,6 +231,42 @@ void write(const std::string& path, int width, int height, int channels, int bit
   if (!file) {
     fail(path, "cannot write");
   }
+}
+
+bool isPng(const std::vector<uint8_t>& bytes) {
+  return bytes.size() >= kSignature.size() &&
+         std::equal(kSignature.begin(), kSignature.end(), bytes.begin());
+}
+
+Image decodeAny(const std::vector<uint8_t>& bytes, const std::string& path, int max_size,
+                int channels) {
+  // PNGs get the full chunk checks; other formats only stb's own.
+  if (isPng(bytes)) return decode(bytes, path, max_size, channels);
+  if (bytes.empty() || bytes.size() > static_cast<size_t>(INT_MAX)) {
+    throw Error("image '" + path + "': empty or too large");
+  }
+  const auto len = static_cast<int>(bytes.size());
+  int w = 0, h = 0, in_file = 0;
+  // Size first: never allocate for an absurd header.
+  if (stbi_info_from_memory(bytes.data(), len, &w, &h, &in_file) == 0) {
+    throw Error("image '" + path + "': not a PNG, JPEG, BMP or TGA image (" +
+                stbi_failure_reason() + ")");
+  }
+  if (w <= 0 || h <= 0 || w > max_size || h > max_size) {
+    throw Error("image '" + path + "': image of " + std::to_string(w) + " x " + std::to_string(h) +
+                " texels exceeds the limit of " + std::to_string(max_size) + " per side");
+  }
+  // Decode to 8 bits per channel and convert to [0, 1].
+  std::unique_ptr<stbi_uc, void (*)(void*)> raw(
+      stbi_load_from_memory(bytes.data(), len, &w, &h, &in_file, channels), stbi_image_free);
+  if (!raw) throw Error("image '" + path + "': corrupt image data (" + stbi_failure_reason() + ")");
+  Image image;
+  image.header = {w, h, 8, channels == 1 ? kGrey : kRgb};
+  image.channels = channels;
+  const size_t count = static_cast<size_t>(w) * static_cast<size_t>(h) * channels;
+  image.samples.resize(count);
+  for (size_t k = 0; k < count; ++k) image.samples[k] = static_cast<float>(raw.get()[k]) / 255.0f;
+  return image;
 }
 
 }  // namespace asperity::png

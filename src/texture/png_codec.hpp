@@ -41,6 +41,15 @@ Header inspect(const std::vector<uint8_t>& bytes, const std::string& path, int m
 Image decode(const std::vector<uint8_t>& bytes, const std::string& path, int max_size,
              int channels);
 
+// True when the bytes start with the PNG signature.
+bool isPng(const std::vector<uint8_t>& bytes);
+
+// Decodes a PNG (as decode) or any other format stb reads (JPEG, BMP, TGA) to 8-bit
+// `channels`, checking the size stb reports against max_size before decoding. Throws
+// asperity::Error naming `path`.
+Image decodeAny(const std::vector<uint8_t>& bytes, const std::string& path, int max_size,
+                int channels);
+
 // Writes an 8- or 16-bit RGB / RGBA / grey image, rows top to bottom; samples are the raw
 // integer values (0..255 or 0..65535). Throws asperity::Error naming `path`.
 void write(const std::string& path, int width, int height, int channels, int bits,

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 
 #include "asperity/error.hpp"
 #include "texture/png_codec.hpp"
@@ -11,8 +12,9 @@ namespace asperity {
 
 namespace {
 
-// Decoded vectors shorter than this read as flat (0, 0, 1) (see docs/textures.md).
-constexpr float kMinLength = 1e-6f;
+// SPEC 10: a texel is a normal when its decoded length lies in [0.5, 1.5] and it faces out.
+constexpr float kMinNormalLength = 0.5f;
+constexpr float kMaxNormalLength = 1.5f;
 
 // Rejects colour types that cannot hold a normal map, naming the file.
 void requireRgb(const png::Header& header, const std::string& path) {
@@ -25,33 +27,79 @@ void requireRgb(const png::Header& header, const std::string& path) {
   }
 }
 
-// Encoded value in [0, 1] -> signed component in [-1, 1].
-Vec3f decodeTexel(const float* rgb, GreenConvention green) {
+// Encoded value in [0, 1] -> unit normal; a texel that is no normal reads flat (SPEC 10).
+Vec3f decodeTexel(const float* rgb, GreenConvention green, float scale, bool& valid) {
   Vec3f m(2.0f * rgb[0] - 1.0f, 2.0f * rgb[1] - 1.0f, 2.0f * rgb[2] - 1.0f);
-  if (green == GreenConvention::DirectX) {
-    m.y() = -m.y();
+  const float raw_length = m.norm();
+  valid = raw_length >= kMinNormalLength && raw_length <= kMaxNormalLength && m.z() > 0.0f;
+  if (!valid) return Vec3f(0, 0, 1);
+  if (green == GreenConvention::DirectX) m.y() = -m.y();
+  // glTF normalTexture.scale: x and y scaled before normalising.
+  m.x() *= scale;
+  m.y() *= scale;
+  return m.normalized();
+}
+
+// Decoded RGB samples (rows top first) -> a map with rows bottom-up; counts invalid texels.
+NormalMap fromImage(const png::Image& image, GreenConvention green, double scale,
+                    NormalMapStats& stats) {
+  const int w = image.header.width;
+  const int h = image.header.height;
+  NormalMap map(w, h);
+  stats.texels = static_cast<size_t>(w) * static_cast<size_t>(h);
+  stats.invalid = 0;
+  stats.bits = image.header.bit_depth == 16 ? 16 : 8;
+  const auto s = static_cast<float>(scale);
+  // PNG row r (top first) becomes map row j = H - 1 - r.
+  for (int r = 0; r < h; ++r) {
+    for (int i = 0; i < w; ++i) {
+      const size_t k = (static_cast<size_t>(r) * w + i) * 3;
+      bool valid = true;
+      map.at(i, h - 1 - r) = decodeTexel(&image.samples[k], green, s, valid);
+      stats.invalid += valid ? 0 : 1;
+    }
   }
-  const float length = m.norm();
-  return length < kMinLength ? Vec3f(0, 0, 1) : Vec3f(m / length);
+  return map;
 }
 
 }  // namespace
 
-NormalMap loadNormalMapPng(const std::string& path, GreenConvention green) {
+void warnInvalidTexels(const std::string& name, const NormalMapStats& stats) {
+  if (stats.invalid == 0) return;
+  const double percent = 100.0 * stats.invalidFraction();
+  const long rounded = std::lround(percent);
+  const std::string shown = rounded == 0 ? "< 1" : std::to_string(rounded);
+  std::cerr << "asperity: warning: " << name << ": " << shown
+            << " % of texels are not unit normals; treated as flat\n";
+}
+
+NormalMap loadNormalMapPng(const std::string& path, GreenConvention green, NormalMapStats* stats) {
   // Header checks (size, colour type) come before any decoding.
   const std::vector<uint8_t> bytes = png::readFile(path);
   requireRgb(png::inspect(bytes, path, kMaxTextureSize), path);
   const png::Image image = png::decode(bytes, path, kMaxTextureSize, 3);
-  // PNG row r (top first) becomes map row j = H - 1 - r.
-  const int w = image.header.width;
-  const int h = image.header.height;
-  NormalMap map(w, h);
-  for (int r = 0; r < h; ++r) {
-    for (int i = 0; i < w; ++i) {
-      const size_t k = (static_cast<size_t>(r) * w + i) * 3;
-      map.at(i, h - 1 - r) = decodeTexel(&image.samples[k], green);
-    }
-  }
+  NormalMapStats local;
+  NormalMap map = fromImage(image, green, 1.0, local);
+  // The caller that asks for the counts reports them itself.
+  if (stats)
+    *stats = local;
+  else
+    warnInvalidTexels(path, local);
+  return map;
+}
+
+NormalMap decodeNormalMap(const std::vector<uint8_t>& bytes, const std::string& name,
+                          GreenConvention green, double scale, NormalMapStats* stats) {
+  // PNGs must be RGB(A); other formats are converted by stb.
+  if (png::isPng(bytes)) requireRgb(png::inspect(bytes, name, kMaxTextureSize), name);
+  const png::Image image = png::decodeAny(bytes, name, kMaxTextureSize, 3);
+  NormalMapStats local;
+  NormalMap map = fromImage(image, green, scale, local);
+  // The caller that asks for the counts reports them itself.
+  if (stats)
+    *stats = local;
+  else
+    warnInvalidTexels(name, local);
   return map;
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
 #include "asperity/texture/generators.hpp"
 #include "asperity/texture/png_io.hpp"
@@ -130,6 +131,34 @@ TEST(TextureCommand, MissingGeneratorOrOutputIsNamed) {
 TEST(TextureCommand, UnwritableOutputIsNamed) {
   const std::string out = test::tempDir("tex") + "/no/such/folder/x.png";
   expectOneLineError(runCli({"texture", "gaussian", "--size", "8", "--out", out}), out);
+}
+
+TEST(TextureInspect, JsonHasEveryKeyAndTheVerdict) {
+  // A generated relief saved as OpenGL reads "opengl"; saved as DirectX, "directx".
+  const std::string dir = test::tempDir("inspect");
+  ASSERT_EQ(runCli({"texture", "stone", "--size", "64", "--out", dir + "/gl.png"}).exit_code, 0);
+  ASSERT_EQ(
+      runCli({"texture", "stone", "--size", "64", "--directx", "--out", dir + "/dx.png"}).exit_code,
+      0);
+  const auto gl = runCli({"texture", "inspect", dir + "/gl.png", "--json"});
+  ASSERT_EQ(gl.exit_code, 0) << gl.err;
+  const auto j = nlohmann::json::parse(gl.out);
+  for (const char* key :
+       {"width", "height", "bits", "invalid_fraction", "convention", "mean_slope", "box"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["width"], 64);
+  EXPECT_EQ(j["bits"], 8);
+  EXPECT_EQ(j["invalid_fraction"], 0.0);
+  EXPECT_EQ(j["convention"], "opengl");
+  EXPECT_GT(j["mean_slope"].get<double>(), 0.0);
+  EXPECT_TRUE(j["box"].contains("+t"));
+  const auto dx = runCli({"texture", "inspect", dir + "/dx.png", "--json"});
+  EXPECT_EQ(nlohmann::json::parse(dx.out)["convention"], "directx");
+}
+
+TEST(TextureInspect, MissingFileIsOneLineError) {
+  expectOneLineError(runCli({"texture", "inspect", "/nonexistent/map.png"}),
+                     "/nonexistent/map.png");
 }
 
 }  // namespace

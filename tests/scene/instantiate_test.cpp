@@ -155,5 +155,23 @@ TEST(Instantiate, CodeBuiltSceneWithUnknownJointBody) {
   }
 }
 
+TEST(Instantiate, GlbMaterialSuppliesTheNormalMapWhenTheSurfaceNamesNone) {
+  // glb_asset.json: the ground's surface names no normal_map; the .glb embeds a 64 x 64
+  // sawtooth (period 16), which must arrive as the generator makes it (8-bit quantised).
+  const auto world = instantiate(example("glb_asset.json"));
+  const Surface& ground = surfaceOf(*world, "ground");
+  ASSERT_NE(ground.normal_map, nullptr);
+  GeneratorSpec spec;
+  spec.name = "sawtooth";
+  spec.size = 64;
+  spec.params = {{"period", "16"}};
+  const NormalMap expected = generateNormalMap(spec);
+  ASSERT_EQ(ground.normal_map->width(), 64);
+  for (size_t k = 0; k < expected.texels().size(); ++k)
+    ASSERT_LT((ground.normal_map->texels()[k] - expected.texels()[k]).norm(), 0.02f) << k;
+  // The box's own surface stays flat.
+  EXPECT_EQ(surfaceOf(*world, "slider").normal_map, nullptr);
+}
+
 }  // namespace
 }  // namespace asperity

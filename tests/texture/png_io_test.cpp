@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 
 #include "asperity/error.hpp"
@@ -203,13 +204,37 @@ TEST(PngIo, DecodedValuesFollowTwoRgbMinusOne) {
   EXPECT_TRUE(near(map.at(1, 0).x(), tilted.x(), 0.0, 1e-6));
 }
 
-TEST(PngIo, MidGreyDecodesByTheFormula) {
-  // (128, 128, 128) is not "flat": 2 rgb - 1 = (1/255)(1, 1, 1), which normalises to the
-  // diagonal. Only vectors shorter than 1e-6 (not reachable from 8 or 16 bits) read as flat.
-  const std::string path = test::tempDir("png") + "/grey.png";
-  png::write(path, 1, 1, 3, 8, {128, 128, 128});
-  const Vec3f m = loadNormalMapPng(path).at(0, 0);
-  for (int c = 0; c < 3; ++c) EXPECT_TRUE(near(m[c], 1.0 / std::sqrt(3.0), 0.0, 1e-6));
+TEST(PngIo, TexelsThatAreNotNormalsReadFlatAndAreCounted) {
+  // SPEC 10: mid grey (length 0.007), white (length 1.73) and a normal facing into the surface
+  // (z < 0) are not normals; they read flat, are counted and warned about once.
+  const std::string path = test::tempDir("png") + "/hygiene.png";
+  png::write(path, 4, 1, 3, 8, {128, 128, 128, 255, 255, 255, 128, 128, 0, 200, 128, 220});
+  NormalMapStats stats;
+  const NormalMap map = loadNormalMapPng(path, GreenConvention::OpenGL, &stats);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(map.at(i, 0), Vec3f(0, 0, 1)) << i;
+  EXPECT_GT(map.at(3, 0).x(), 0.5f);
+  EXPECT_EQ(stats.texels, 4u);
+  EXPECT_EQ(stats.invalid, 3u);
+  EXPECT_DOUBLE_EQ(stats.invalidFraction(), 0.75);
+  // Without a stats request the loader warns: one line naming the file and the share.
+  testing::internal::CaptureStderr();
+  loadNormalMapPng(path);
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(err, "asperity: warning: " + path +
+                     ": 75 % of texels are not unit normals; treated as flat\n");
+}
+
+TEST(PngIo, DecodeFromMemoryAppliesScaleToXAndY) {
+  // glTF normalTexture.scale: x and y scaled, then normalised.
+  const std::string path = test::tempDir("png") + "/scaled.png";
+  png::write(path, 1, 1, 3, 8, {200, 128, 220});
+  std::ifstream in(path, std::ios::binary);
+  const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in),
+                                   std::istreambuf_iterator<char>()};
+  const Vec3f m = decodeNormalMap(bytes, "scaled", GreenConvention::OpenGL, 2.0).at(0, 0);
+  const Vec3f raw(2.0f * 200 / 255 - 1, 2.0f * 128 / 255 - 1, 2.0f * 220 / 255 - 1);
+  EXPECT_TRUE(m.isApprox(Vec3f(2 * raw.x(), 2 * raw.y(), raw.z()).normalized(), 1e-6f));
+  EXPECT_THROW(decodeNormalMap({1, 2, 3}, "junk"), Error);
 }
 
 TEST(PngIoErrors, MissingFile) {

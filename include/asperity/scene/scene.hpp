@@ -46,6 +46,7 @@ struct SceneMesh {
   std::string file;    // as written in the scene: relative to base_dir, or absolute
   double scale = 1.0;  // uniform scale applied to the OBJ's coordinates (1)
   int simplify = 0;    // target triangle count; 0 = keep every triangle
+  std::string node;    // one node or mesh of a multi-mesh asset by name; empty = all of them
 };
 
 // The view a scene is best seen from ("camera" in the JSON): `asperity render` and

@@ -1,7 +1,10 @@
 // PNG normal maps: 8 or 16 bits per channel, RGB or RGBA, m = normalize(2 rgb - 1) (SPEC 6).
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "asperity/texture/normal_map.hpp"
 
@@ -19,10 +22,34 @@ struct PngWriteOptions {
   GreenConvention green = GreenConvention::OpenGL;
 };
 
+// What decoding a normal map found (SPEC 10): texels whose decoded vector 2 rgb - 1 has a length
+// outside [0.5, 1.5] or z <= 0 are not normals (grey or white backgrounds, empty atlas space);
+// they are stored flat (0, 0, 1), so they add no friction, and counted here.
+struct NormalMapStats {
+  size_t texels = 0;
+  size_t invalid = 0;
+  int bits = 8;  // bits per channel of the file
+  double invalidFraction() const {
+    return texels == 0 ? 0.0 : static_cast<double>(invalid) / static_cast<double>(texels);
+  }
+};
+
+// Prints `asperity: warning: NAME: P % of texels are not unit normals; treated as flat` on
+// stderr when the map has any invalid texel (once per loaded map).
+void warnInvalidTexels(const std::string& name, const NormalMapStats& stats);
+
 // Throws asperity::Error naming the file and the problem (missing, corrupt, grayscale, palette,
-// zero-sized, over kMaxTextureSize, ...).
-NormalMap loadNormalMapPng(const std::string& path,
-                           GreenConvention green = GreenConvention::OpenGL);
+// zero-sized, over kMaxTextureSize, ...). Invalid texels become flat; they are warned about
+// (warnInvalidTexels) unless `stats` is given, when the caller reports them.
+NormalMap loadNormalMapPng(const std::string& path, GreenConvention green = GreenConvention::OpenGL,
+                           NormalMapStats* stats = nullptr);
+
+// A normal map from an encoded image in memory (PNG, JPEG, BMP or TGA, as embedded in a .glb or
+// a data URI). `scale` multiplies x and y before normalising (glTF normalTexture.scale, MTL
+// -bm). `name` appears in errors and the invalid-texel warning (given unless `stats` is).
+NormalMap decodeNormalMap(const std::vector<uint8_t>& bytes, const std::string& name,
+                          GreenConvention green = GreenConvention::OpenGL, double scale = 1.0,
+                          NormalMapStats* stats = nullptr);
 void saveNormalMapPng(const NormalMap& map, const std::string& path,
                       const PngWriteOptions& options = {});
 

@@ -1,0 +1,240 @@
+// Assets through the Open Asset Import Library (see asset_import.hpp): chosen nodes' meshes
+// gathered into one triangle mesh, the first normal-mapped material decoded.
+#include "asperity/geometry/asset_import.hpp"
+
+#include <assimp/GltfMaterial.h>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <assimp/Importer.hpp>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "asperity/error.hpp"
+#include "geometry/asset_import_internal.hpp"
+
+namespace asperity {
+
+namespace {
+
+// Reading as assimp does it: polygons split into triangles, equal corners shared, structure
+// validated (so a broken file fails here, not later).
+constexpr unsigned kImportFlags =
+    aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
+
+// A mesh chosen for import with the transform of the node that holds it.
+struct Placed {
+  const aiMesh* mesh = nullptr;
+  aiMatrix4x4 transform;
+};
+
+// Meshes under `node` (with accumulated transforms); all of them when `take` is set, else only
+// those of nodes or meshes named `name` (and everything below such a node).
+void collect(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
+             const std::string& name, bool take, std::vector<Placed>& out) {
+  const aiMatrix4x4 world = parent * node.mTransformation;
+  const bool take_node = take || node.mName.C_Str() == name;
+  for (unsigned k = 0; k < node.mNumMeshes; ++k) {
+    const aiMesh* mesh = scene.mMeshes[node.mMeshes[k]];
+    if (take_node || mesh->mName.C_Str() == name) out.push_back({mesh, world});
+  }
+  for (unsigned c = 0; c < node.mNumChildren; ++c)
+    collect(scene, *node.mChildren[c], world, name, take_node, out);
+}
+
+// The first material of the chosen meshes with a normal texture (or the first material).
+const aiMaterial* pickMaterial(const aiScene& scene, const std::vector<Placed>& placed) {
+  const aiMaterial* first = nullptr;
+  for (const Placed& p : placed) {
+    if (p.mesh->mMaterialIndex >= scene.mNumMaterials) continue;
+    const aiMaterial* m = scene.mMaterials[p.mesh->mMaterialIndex];
+    if (!first) first = m;
+    if (m->GetTextureCount(aiTextureType_NORMALS) > 0) return m;
+  }
+  return first;
+}
+
+// glTF's base colour factor, else the diffuse colour; the base colour texture's name.
+void readBaseColor(const aiMaterial& m, AssetMaterial& out) {
+  aiColor4D c;
+  if (m.Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS ||
+      m.Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS) {
+    out.has_base_color = true;
+    out.base_color = Vec3(std::clamp<double>(c.r, 0, 1), std::clamp<double>(c.g, 0, 1),
+                          std::clamp<double>(c.b, 0, 1));
+  }
+  aiString tex;
+  if (m.GetTexture(AI_MATKEY_BASE_COLOR_TEXTURE, &tex) == AI_SUCCESS ||
+      m.GetTexture(aiTextureType_DIFFUSE, 0, &tex) == AI_SUCCESS)
+    out.base_color_texture = tex.C_Str();
+}
+
+// The normal texture's bytes: embedded ("*N", .glb, data URI) or a file beside the asset.
+std::vector<uint8_t> textureBytes(const aiScene& scene, const std::string& ref,
+                                  const std::string& asset_dir, const std::string& asset,
+                                  std::string& name) {
+  if (const aiTexture* t = scene.GetEmbeddedTexture(ref.c_str())) {
+    name = "embedded texture '" + ref + "'";
+    // mHeight == 0: compressed bytes (PNG, JPEG) of mWidth bytes.
+    if (t->mHeight != 0)
+      throw Error(asset + ": " + name + " is stored uncompressed; only PNG or JPEG is read");
+    const auto* p = reinterpret_cast<const uint8_t*>(t->pcData);
+    return std::vector<uint8_t>(p, p + t->mWidth);
+  }
+  name = "image '" + ref + "'";
+  if (asset_dir.empty() && !std::filesystem::path(ref).is_absolute())
+    throw Error(asset + ": " + name + " is a separate file, which cannot be read from memory");
+  return detail::readAssetFile(detail::resolveBeside(asset_dir, ref), asset, name);
+}
+
+// The normal texture of `m` (SPEC 10): uv set, glTF scale, decoded with hygiene.
+void readNormalTexture(const aiScene& scene, const aiMaterial& m, const detail::Source& src,
+                       const AssetImportOptions& options, AssetMaterial& out) {
+  aiString ref;
+  if (m.GetTexture(aiTextureType_NORMALS, 0, &ref) != AI_SUCCESS) return;
+  int uv_set = 0;
+  if (m.Get(AI_MATKEY_UVWSRC(aiTextureType_NORMALS, 0), uv_set) == AI_SUCCESS)
+    out.uv_set = std::max(uv_set, 0);
+  ai_real scale = 1;
+  if (m.Get(AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_NORMALS, 0), scale) == AI_SUCCESS)
+    out.normal_scale = static_cast<double>(scale);
+  out.has_normal_texture = true;
+  if (!options.load_textures) return;
+  // glTF fixes the convention; other formats take the caller's.
+  const GreenConvention green = src.gltf ? GreenConvention::OpenGL : options.green;
+  std::string name;
+  const std::vector<uint8_t> bytes = textureBytes(scene, ref.C_Str(), src.dir, src.name, name);
+  out.normal_map_name = name;
+  out.normal_map = std::make_shared<const NormalMap>(detail::decodeAssetNormalMap(
+      bytes, src.name, name, green, out.normal_scale, out.normal_stats));
+}
+
+// Appends one placed mesh's triangles (positions transformed and scaled, uvs of `uv_set`).
+bool hasUvs(const aiMesh& m, int uv_set) {
+  return uv_set < AI_MAX_NUMBER_OF_TEXTURECOORDS &&
+         m.HasTextureCoords(static_cast<unsigned>(uv_set));
+}
+
+// Appends one placed mesh's triangles (positions transformed and scaled, uvs of `uv_set` when
+// `keep_uvs`); a normal-mapped asset (`need_uvs`) must have them.
+void appendMesh(const Placed& p, double scale, int uv_set, bool need_uvs, bool keep_uvs,
+                const std::string& asset, TriangleMeshData& out) {
+  const aiMesh& m = *p.mesh;
+  const std::string which = "mesh '" + std::string(m.mName.C_Str()) + "'";
+  // Points and lines cannot touch anything.
+  if (m.mPrimitiveTypes & (aiPrimitiveType_POINT | aiPrimitiveType_LINE))
+    throw Error(asset + ": " + which + " has non-triangle primitives (points or lines)");
+  if (need_uvs && !hasUvs(m, uv_set))
+    throw Error(asset + ": " + which + " has no texture coordinates (UV set " +
+                std::to_string(uv_set) + ") for its normal map");
+  const size_t base = out.vertices.size();
+  for (unsigned v = 0; v < m.mNumVertices; ++v) {
+    const aiVector3D q = p.transform * m.mVertices[v];
+    out.vertices.emplace_back(scale * q.x, scale * q.y, scale * q.z);
+    if (keep_uvs) {
+      const aiVector3D& t = m.mTextureCoords[uv_set][v];
+      out.uvs.emplace_back(t.x, t.y);
+    }
+  }
+  for (unsigned f = 0; f < m.mNumFaces; ++f) {
+    const aiFace& face = m.mFaces[f];
+    if (face.mNumIndices != 3)
+      throw Error(asset + ": " + which + " has a face with " + std::to_string(face.mNumIndices) +
+                  " corners");
+    out.triangles.push_back({static_cast<int>(base + face.mIndices[0]),
+                             static_cast<int>(base + face.mIndices[1]),
+                             static_cast<int>(base + face.mIndices[2])});
+  }
+}
+
+// From assimp's scene to our mesh and material.
+ImportedAsset convert(const aiScene& scene, const detail::Source& src,
+                      const AssetImportOptions& options) {
+  if (!scene.mRootNode) throw Error(src.name + ": the file holds no nodes");
+  std::vector<Placed> placed;
+  collect(scene, *scene.mRootNode, aiMatrix4x4(), options.node, options.node.empty(), placed);
+  if (placed.empty())
+    throw Error(src.name + (options.node.empty()
+                                ? std::string(": the file holds no meshes")
+                                : ": no node or mesh is named '" + options.node + "'"));
+  // Material first: its normal map decides which UV set the mesh keeps.
+  ImportedAsset asset;
+  if (const aiMaterial* m = pickMaterial(scene, placed)) {
+    readBaseColor(*m, asset.material);
+    readNormalTexture(scene, *m, src, options, asset.material);
+  }
+  // UVs are kept when every chosen mesh has them (a scene's own normal_map follows them too).
+  const int uv_set = asset.material.uv_set;
+  const bool need_uvs = asset.material.has_normal_texture;
+  const bool keep_uvs = need_uvs || std::all_of(placed.begin(), placed.end(), [&](const Placed& p) {
+                          return hasUvs(*p.mesh, uv_set);
+                        });
+  asset.mesh = std::make_shared<TriangleMeshData>();
+  asset.mesh->source_file = src.name;
+  for (const Placed& p : placed)
+    appendMesh(p, options.scale, uv_set, need_uvs, keep_uvs, src.name, *asset.mesh);
+  if (asset.mesh->triangles.empty()) throw Error(src.name + ": the chosen meshes have no faces");
+  return asset;
+}
+
+// Lower-case extension without the dot.
+std::string extensionOf(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  if (!ext.empty()) ext.erase(0, 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+// assimp's one-line reason, without a trailing newline.
+std::string importerError(const Assimp::Importer& importer) {
+  std::string why = importer.GetErrorString();
+  while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
+  std::replace(why.begin(), why.end(), '\n', ' ');
+  return why.empty() ? "unreadable" : why;
+}
+
+}  // namespace
+
+bool isAssimpExtension(const std::string& extension) {
+  static const char* const kKnown[] = {"gltf", "glb", "fbx", "dae", "3ds", "obj"};
+  return std::find(std::begin(kKnown), std::end(kKnown), extension) != std::end(kKnown);
+}
+
+ImportedAsset importAsset(const std::string& path, const AssetImportOptions& options) {
+  if (!(options.scale > 0)) throw Error(path + ": mesh scale must be positive");
+  const std::string ext = extensionOf(path);
+  // OBJ keeps tinyobjloader (its MTL included), so OBJ scenes load exactly as before.
+  if (ext == "obj") return detail::importObj(path, options);
+  if (!isAssimpExtension(ext))
+    throw Error(path + ": unknown mesh format '." + ext +
+                "' (read: .obj, .gltf, .glb, .fbx, .dae, .3ds)");
+  if (!std::filesystem::is_regular_file(path)) throw Error(path + ": cannot open file");
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(path, kImportFlags);
+  if (!scene) throw Error(path + ": cannot import (" + importerError(importer) + ")");
+  const detail::Source src{path, std::filesystem::path(path).parent_path().string(),
+                           ext == "gltf" || ext == "glb"};
+  return convert(*scene, src, options);
+}
+
+ImportedAsset importAssetFromMemory(const std::vector<uint8_t>& bytes, const std::string& name,
+                                    const std::string& extension,
+                                    const AssetImportOptions& options) {
+  if (!(options.scale > 0)) throw Error(name + ": mesh scale must be positive");
+  if (!isAssimpExtension(extension))
+    throw Error(name + ": unknown mesh format '" + extension + "'");
+  if (bytes.empty()) throw Error(name + ": empty file");
+  Assimp::Importer importer;
+  const aiScene* scene =
+      importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, extension.c_str());
+  if (!scene) throw Error(name + ": cannot import (" + importerError(importer) + ")");
+  const detail::Source src{name, "", extension == "gltf" || extension == "glb"};
+  return convert(*scene, src, options);
+}
+
+}  // namespace asperity

@@ -1,0 +1,109 @@
+// OBJ + MTL assets and the texture helpers of asset_import (see asset_import_internal.hpp).
+#include <tiny_obj_loader.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "asperity/error.hpp"
+#include "asperity/geometry/mesh_io.hpp"
+#include "geometry/asset_import_internal.hpp"
+
+namespace asperity::detail {
+
+namespace {
+
+// The first material the faces use that names a normal map (`norm`, else a bump map, which
+// obj2gltf and most exporters fill with a tangent-space normal map), else the first used one.
+const tinyobj::material_t* pickMaterial(const tinyobj::ObjReader& reader) {
+  const auto& materials = reader.GetMaterials();
+  const tinyobj::material_t* first = nullptr;
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    for (const int id : shape.mesh.material_ids) {
+      if (id < 0 || static_cast<size_t>(id) >= materials.size()) continue;
+      const tinyobj::material_t& m = materials[static_cast<size_t>(id)];
+      if (!first) first = &m;
+      if (!m.normal_texname.empty() || !m.bump_texname.empty()) return &m;
+    }
+  }
+  return first;
+}
+
+// Material fields of one MTL entry; the normal map decoded when asked.
+AssetMaterial readMaterial(const tinyobj::material_t& m, const std::string& path,
+                           const AssetImportOptions& options) {
+  AssetMaterial out;
+  out.has_base_color = true;
+  out.base_color = Vec3(m.diffuse[0], m.diffuse[1], m.diffuse[2]).cwiseMax(0.0).cwiseMin(1.0);
+  out.base_color_texture = m.diffuse_texname;
+  // `norm` first; `map_Bump` / `bump` with its -bm multiplier otherwise.
+  const bool norm = !m.normal_texname.empty();
+  const std::string ref = norm ? m.normal_texname : m.bump_texname;
+  if (ref.empty()) return out;
+  out.has_normal_texture = true;
+  out.normal_scale =
+      static_cast<double>(norm ? m.normal_texopt.bump_multiplier : m.bump_texopt.bump_multiplier);
+  if (!options.load_textures) return out;
+  const std::string part = "image '" + ref + "'";
+  const std::string dir = std::filesystem::path(path).parent_path().string();
+  const std::vector<uint8_t> bytes = readAssetFile(resolveBeside(dir, ref), path, part);
+  out.normal_map_name = part;
+  out.normal_map = std::make_shared<const NormalMap>(
+      decodeAssetNormalMap(bytes, path, part, options.green, out.normal_scale, out.normal_stats));
+  return out;
+}
+
+}  // namespace
+
+std::string resolveBeside(const std::string& dir, const std::string& ref) {
+  const std::filesystem::path p(ref);
+  return p.is_absolute() || dir.empty() ? ref : (std::filesystem::path(dir) / p).string();
+}
+
+std::vector<uint8_t> readAssetFile(const std::string& path, const std::string& asset,
+                                   const std::string& part) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(asset + ": " + part + " cannot be read (" + path + ")");
+  return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+NormalMap decodeAssetNormalMap(const std::vector<uint8_t>& bytes, const std::string& asset,
+                               const std::string& part, GreenConvention green, double scale,
+                               NormalMapStats& stats) {
+  // Errors and the invalid-texel warning name the asset and the image.
+  const std::string name = asset + ": normal map " + part;
+  NormalMap map;
+  try {
+    // The image's own name inside the decoder's message (part is `image 'NAME'`).
+    const size_t open = part.find('\''), close = part.rfind('\'');
+    const std::string ref =
+        open != std::string::npos && close > open ? part.substr(open + 1, close - open - 1) : part;
+    map = decodeNormalMap(bytes, ref, green, scale, &stats);
+  } catch (const Error& e) {
+    throw Error(asset + ": normal map: " + e.what());
+  }
+  warnInvalidTexels(name, stats);
+  return map;
+}
+
+ImportedAsset importObj(const std::string& path, const AssetImportOptions& options) {
+  // Geometry exactly as before; the node key picks nothing in OBJ files.
+  if (!options.node.empty())
+    throw Error(path + ": \"node\" is not supported for OBJ files (one mesh per file)");
+  ImportedAsset asset;
+  asset.mesh = loadObjMesh(path, options.scale);
+  // The MTL beside it; a missing MTL only means no material.
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.mtl_search_path = std::filesystem::path(path).parent_path().string();
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromFile(path, config)) return asset;
+  if (const tinyobj::material_t* m = pickMaterial(reader))
+    asset.material = readMaterial(*m, path, options);
+  if (asset.material.has_normal_texture && asset.mesh->uvs.empty())
+    throw Error(path + ": the mesh has no texture coordinates (vt) for its normal map");
+  return asset;
+}
+
+}  // namespace asperity::detail

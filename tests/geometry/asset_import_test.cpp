@@ -1,0 +1,153 @@
+// Asset import: glTF (external and data-URI images), OBJ + MTL, 3DS from glmark2-data, the node
+// key, and one test per kind of broken asset (the message names the file and the part).
+#include "asperity/geometry/asset_import.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "asperity/collision/signed_distance_field.hpp"
+#include "asperity/error.hpp"
+#include "asperity/geometry/mesh_io.hpp"
+#include "support/test_support.hpp"
+
+namespace asperity {
+namespace {
+
+std::string fixture(const std::string& name) {
+  return test::sourcePath("tests/fixtures/assets/" + name);
+}
+
+// The error message of importAsset(path, options), or "" when it succeeds.
+std::string importError(const std::string& path, const AssetImportOptions& options = {}) {
+  try {
+    importAsset(path, options);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// The texel of tilt_normal.png, (200, 128, 220) decoded and normalised (SPEC 6).
+Vec3f tiltTexel(float scale) {
+  const Vec3f m(2.0f * 200 / 255 - 1, 2.0f * 128 / 255 - 1, 2.0f * 220 / 255 - 1);
+  return Vec3f(scale * m.x(), scale * m.y(), m.z()).normalized();
+}
+
+TEST(AssetImport, GltfPlateBringsItsNormalMapAndBaseColour) {
+  const ImportedAsset a = importAsset(fixture("plate.gltf"));
+  ASSERT_EQ(a.mesh->triangles.size(), 2u);
+  ASSERT_EQ(a.mesh->uvs.size(), a.mesh->vertices.size());
+  ASSERT_TRUE(a.material.normal_map);
+  EXPECT_EQ(a.material.normal_map->width(), 8);
+  EXPECT_TRUE(a.material.normal_map->at(3, 3).isApprox(tiltTexel(1.0f), 1e-5f));
+  EXPECT_EQ(a.material.normal_stats.invalid, 0u);
+  EXPECT_TRUE(a.material.has_base_color);
+  EXPECT_NEAR(a.material.base_color.x(), 0.8, 1e-6);
+  // glTF's v runs down the image; the mesh keeps OpenGL's v up: file (0, 1) at (-0.1, -0.1).
+  for (size_t v = 0; v < a.mesh->vertices.size(); ++v) {
+    if (a.mesh->vertices[v].isApprox(Vec3(-0.1, -0.1, 0), 1e-6)) {
+      EXPECT_TRUE(a.mesh->uvs[v].isApprox(Vec2(0, 0), 1e-6)) << a.mesh->uvs[v].transpose();
+    }
+  }
+}
+
+TEST(AssetImport, DataUriImageMatchesTheExternalFile) {
+  const ImportedAsset file = importAsset(fixture("plate.gltf"));
+  const ImportedAsset uri = importAsset(fixture("plate_data_uri.gltf"));
+  ASSERT_TRUE(uri.material.normal_map);
+  EXPECT_EQ(uri.material.normal_map->texels(), file.material.normal_map->texels());
+}
+
+TEST(AssetImport, FromMemoryMatchesFromFile) {
+  std::ifstream in(fixture("plate_data_uri.gltf"), std::ios::binary);
+  const std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in),
+                                   std::istreambuf_iterator<char>()};
+  const ImportedAsset mem = importAssetFromMemory(bytes, "plate", "gltf");
+  const ImportedAsset file = importAsset(fixture("plate_data_uri.gltf"));
+  EXPECT_EQ(mem.mesh->vertices, file.mesh->vertices);
+  EXPECT_EQ(mem.material.normal_map->texels(), file.material.normal_map->texels());
+}
+
+TEST(AssetImport, ObjMtlBumpMapWithMultiplier) {
+  const ImportedAsset a = importAsset(fixture("slab.obj"));
+  ASSERT_TRUE(a.material.normal_map);
+  EXPECT_DOUBLE_EQ(a.material.normal_scale, 0.5);
+  EXPECT_TRUE(a.material.normal_map->at(0, 0).isApprox(tiltTexel(0.5f), 1e-5f));
+  EXPECT_NEAR(a.material.base_color.y(), 0.3, 1e-6);
+  // Geometry exactly as the plain OBJ reader gives it.
+  EXPECT_EQ(a.mesh->vertices, loadObjMesh(fixture("slab.obj"))->vertices);
+}
+
+TEST(AssetImport, NodeKeyPicksByNameAndRejectsUnknownNames) {
+  AssetImportOptions options;
+  options.node = "plate";
+  EXPECT_EQ(importAsset(fixture("plate.gltf"), options).mesh->triangles.size(), 2u);
+  options.node = "plate_mesh";
+  EXPECT_EQ(importAsset(fixture("plate.gltf"), options).mesh->triangles.size(), 2u);
+  options.node = "lid";
+  EXPECT_NE(importError(fixture("plate.gltf"), options).find("no node or mesh is named 'lid'"),
+            std::string::npos);
+}
+
+TEST(AssetImport, ScaleMultipliesPositions) {
+  AssetImportOptions options;
+  options.scale = 10.0;
+  const ImportedAsset a = importAsset(fixture("plate.gltf"), options);
+  double extent = 0.0;
+  for (const Vec3& v : a.mesh->vertices) extent = std::max(extent, v.cwiseAbs().maxCoeff());
+  EXPECT_NEAR(extent, 1.0, 1e-6);
+}
+
+// Assets no one here wrote: glmark2-data's asteroid (3DS) and bunny (OBJ).
+TEST(AssetImport, Glmark2AsteroidThreeDs) {
+  const std::string path = "/usr/share/glmark2/models/asteroid-low.3ds";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "glmark2-data is not installed";
+  const ImportedAsset a = importAsset(path);
+  EXPECT_GT(a.mesh->triangles.size(), 100u);
+  EXPECT_EQ(a.mesh->uvs.size(), a.mesh->vertices.size());
+  // Split at its UV seams, it is still closed once welded by position.
+  EXPECT_TRUE(isClosedMesh(*a.mesh));
+}
+
+TEST(AssetImport, Glmark2BunnyObjIsUnchanged) {
+  const std::string path = "/usr/share/glmark2/models/bunny.obj";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "glmark2-data is not installed";
+  const ImportedAsset a = importAsset(path);
+  const auto plain = loadObjMesh(path);
+  EXPECT_EQ(a.mesh->vertices, plain->vertices);
+  EXPECT_EQ(a.mesh->triangles, plain->triangles);
+  EXPECT_FALSE(a.material.normal_map);
+}
+
+// Broken assets: one message naming the file and the part at fault.
+TEST(AssetImport, BrokenGltfsNameTheFileAndThePart) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"missing_image.gltf", "image 'no_such_image.png' cannot be read"},
+      {"broken_buffer.gltf", "no_such_buffer.bin"},
+      {"points.gltf", "mesh 'plate_mesh' has non-triangle primitives"},
+      {"huge_texture.gltf", "20000 x 20000"},
+      {"no_uvs.gltf", "mesh 'plate_mesh' has no texture coordinates"},
+  };
+  for (const auto& [file, part] : cases) {
+    const std::string message = importError(fixture(file));
+    EXPECT_NE(message.find(file), std::string::npos) << message;
+    EXPECT_NE(message.find(part), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+TEST(AssetImport, BadPathsAndOptions) {
+  EXPECT_NE(importError(fixture("nothing.glb")).find("cannot open"), std::string::npos);
+  EXPECT_NE(importError(fixture("tilt_normal.png")).find("unknown mesh format"), std::string::npos);
+  AssetImportOptions options;
+  options.scale = 0.0;
+  EXPECT_NE(importError(fixture("plate.gltf"), options).find("scale"), std::string::npos);
+  EXPECT_THROW(importAssetFromMemory({}, "empty", "glb"), Error);
+  EXPECT_THROW(importAssetFromMemory({1, 2, 3}, "junk", "glb"), Error);
+}
+
+}  // namespace
+}  // namespace asperity
