@@ -6,6 +6,7 @@
 #include <array>
 #include <climits>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <memory>
@@ -112,11 +113,19 @@ uint32_t crc32(const uint8_t* data, size_t size, uint32_t crc) {
 }
 
 std::vector<uint8_t> readFile(const std::string& path) {
+  // A directory opens as a stream on Linux and only fails (by throwing) when read.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     fail(path, "cannot open (missing or unreadable)");
   }
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  try {
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  } catch (const std::ios_base::failure&) {
+    fail(path, "cannot be read");
+  }
+  return {};
 }
 
 Header inspect(const std::vector<uint8_t>& bytes, const std::string& path, int max_size) {

@@ -242,6 +242,13 @@ TEST(PngIoErrors, MissingFile) {
               {"/nonexistent/dir/none.png", "cannot open"});
 }
 
+// Found by the generators fuzz target: a heightmap `file` naming a directory used to end the
+// process with an uncaught stream exception.
+TEST(PngIoErrors, DirectoryIsAnErrorNotACrash) {
+  const std::string dir = test::tempDir("png");
+  expectError([&] { loadNormalMapPng(dir); }, {dir, "is a directory"});
+}
+
 TEST(PngIoErrors, TruncatedFile) {
   const std::string dir = test::tempDir("png");
   saveNormalMapPng(variedMap(16, 16), dir + "/full.png");
