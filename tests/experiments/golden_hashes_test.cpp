@@ -34,16 +34,6 @@ std::string configuration() {
   return std::string(ASPERITY_COMPILER) + ", " + ASPERITY_BUILD_CONFIG;
 }
 
-// The scene files whose hashes are pinned: scenes/*.json, sorted.
-std::vector<std::string> goldenScenes() {
-  std::vector<std::string> out;
-  for (const auto& entry : std::filesystem::directory_iterator(test::sourcePath("scenes")))
-    if (entry.path().extension() == ".json")
-      out.push_back("scenes/" + entry.path().filename().string());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 // World::stateHash() of `scene` after kGoldenSeconds, as 16 hex digits.
 std::string hashAfterRun(const std::string& scene) {
   const std::unique_ptr<World> world = instantiate(loadScene(test::sourcePath(scene)));
@@ -90,7 +80,7 @@ void writeGolden(const std::map<std::string, std::string>& hashes) {
 TEST(GoldenHashes, EverySceneMatchesItsPinnedHash) {
   // Run every scene first, so one update rewrites them all.
   std::map<std::string, std::string> now;
-  for (const std::string& scene : goldenScenes()) now[scene] = hashAfterRun(scene);
+  for (const std::string& scene : test::experimentScenes()) now[scene] = hashAfterRun(scene);
   if (std::getenv("ASPERITY_UPDATE_GOLDEN") != nullptr) {
     writeGolden(now);
     GTEST_SKIP() << "rewrote " << kGoldenFile << " for " << configuration();

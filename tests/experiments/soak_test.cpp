@@ -83,17 +83,7 @@ TEST_P(Soak, StaysFiniteInBoundsAndAtRest) {
               world->time());
 }
 
-// Every scene file in scenes/ (the experiments), by file name.
-std::vector<std::string> soakScenes() {
-  std::vector<std::string> out;
-  for (const auto& entry : std::filesystem::directory_iterator(test::sourcePath("scenes")))
-    if (entry.path().extension() == ".json")
-      out.push_back("scenes/" + entry.path().filename().string());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
-INSTANTIATE_TEST_SUITE_P(Scenes, Soak, ::testing::ValuesIn(soakScenes()),
+INSTANTIATE_TEST_SUITE_P(Scenes, Soak, ::testing::ValuesIn(test::experimentScenes()),
                          [](const ::testing::TestParamInfo<std::string>& param) {
                            return std::filesystem::path(param.param).stem().string();
                          });

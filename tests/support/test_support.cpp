@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -15,8 +16,8 @@ namespace asperity::test {
   const double diff = std::abs(actual - expected);
   const double bound = abs_tol + rel_tol * std::abs(expected);
   if (std::isfinite(actual) && diff <= bound) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << actual << " is not within " << bound << " of "
-                                       << expected << " (difference " << diff << ")";
+  return ::testing::AssertionFailure() << actual << " is not within " << bound << " of " << expected
+                                       << " (difference " << diff << ")";
 }
 
 namespace {
@@ -53,9 +54,9 @@ std::string tempDir(const std::string& tag) {
   std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "none";
   for (char& c : name)
     if (c == '/') c = '_';
-  const fs::path dir = fs::temp_directory_path() / "asperity-tests" /
-                       (name + "." + tag + "." + std::to_string(::getpid()) + "." +
-                        std::to_string(counter++));
+  const fs::path dir =
+      fs::temp_directory_path() / "asperity-tests" /
+      (name + "." + tag + "." + std::to_string(::getpid()) + "." + std::to_string(counter++));
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir.string();
@@ -63,6 +64,15 @@ std::string tempDir(const std::string& tag) {
 
 std::string sourcePath(const std::string& relative) {
   return std::string(ASPERITY_SOURCE_DIR) + "/" + relative;
+}
+
+std::vector<std::string> experimentScenes() {
+  std::vector<std::string> out;
+  for (const auto& entry : std::filesystem::directory_iterator(sourcePath("scenes")))
+    if (entry.path().extension() == ".json")
+      out.push_back("scenes/" + entry.path().filename().string());
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 }  // namespace asperity::test

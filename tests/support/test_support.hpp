@@ -28,4 +28,7 @@ std::string tempDir(const std::string& tag);
 // Path of a file in the repository.
 std::string sourcePath(const std::string& relative);
 
+// The experiment scenes: "scenes/<name>.json" for every JSON file in scenes/, sorted.
+std::vector<std::string> experimentScenes();
+
 }  // namespace asperity::test
