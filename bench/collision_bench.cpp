@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include "asperity/collision/collision_detector.hpp"
 #include "asperity/geometry/mesh_io.hpp"
+#include "collision/collision_detector.hpp"
 
 namespace asperity {
 namespace {

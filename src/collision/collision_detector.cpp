@@ -20,7 +20,7 @@
 //
 // A/B rule: when exactly one body is dynamic it is A (the ground is B); when both are
 // dynamic, the lower id is A. The normal points from B toward A, phi >= 0 is the depth.
-#include "asperity/collision/collision_detector.hpp"
+#include "collision/collision_detector.hpp"
 
 #include <BulletCollision/CollisionShapes/btConvexPolyhedron.h>
 #include <btBulletCollisionCommon.h>
@@ -34,7 +34,6 @@
 #include <tuple>
 #include <utility>
 
-#include "asperity/collision/signed_distance_field.hpp"
 #include "asperity/error.hpp"
 #include "collision/bullet_shapes.hpp"
 #include "collision/contact_geometry.hpp"
@@ -42,6 +41,7 @@
 #include "collision/plane_contacts.hpp"
 #include "collision/sdf_pairs.hpp"
 #include "collision/shape_record.hpp"
+#include "collision/signed_distance_field.hpp"
 
 namespace asperity {
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "asperity/collision/signed_distance_field.hpp"
+#include "collision/signed_distance_field.hpp"
 
 namespace asperity::collision_detail {
 

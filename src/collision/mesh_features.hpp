@@ -6,8 +6,8 @@
 #include <memory>
 #include <vector>
 
-#include "asperity/geometry/bvh.hpp"
 #include "asperity/geometry/shape.hpp"
+#include "geometry/bvh.hpp"
 
 namespace asperity::collision_detail {
 

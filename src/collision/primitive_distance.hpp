@@ -2,8 +2,8 @@
 // field side of signed-distance contacts when a concave mesh touches a primitive.
 #pragma once
 
-#include "asperity/collision/signed_distance_field.hpp"
 #include "asperity/geometry/shape.hpp"
+#include "collision/signed_distance_field.hpp"
 
 namespace asperity::collision_detail {
 

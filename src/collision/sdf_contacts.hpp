@@ -7,9 +7,9 @@
 #include <span>
 #include <vector>
 
-#include "asperity/collision/signed_distance_field.hpp"
 #include "asperity/geometry/shape.hpp"
 #include "asperity/math/types.hpp"
+#include "collision/signed_distance_field.hpp"
 
 namespace asperity::collision_detail {
 

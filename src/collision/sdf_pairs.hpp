@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "asperity/collision/collision_detector.hpp"
+#include "collision/collision_detector.hpp"
 #include "collision/sdf_contacts.hpp"
 #include "collision/shape_record.hpp"
 

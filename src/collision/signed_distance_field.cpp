@@ -1,5 +1,5 @@
 // Grid signed distance field of a closed triangle mesh (see signed_distance_field.hpp).
-#include "asperity/collision/signed_distance_field.hpp"
+#include "collision/signed_distance_field.hpp"
 
 #include <algorithm>
 #include <array>

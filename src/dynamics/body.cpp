@@ -5,7 +5,7 @@
 #include <string>
 
 #include "asperity/error.hpp"
-#include "asperity/geometry/mass.hpp"
+#include "geometry/mass.hpp"
 
 namespace asperity {
 

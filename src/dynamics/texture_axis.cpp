@@ -1,5 +1,5 @@
 // The texture's +u axis of a body's surface at a contact, in world.
-#include "asperity/dynamics/texture_axis.hpp"
+#include "dynamics/texture_axis.hpp"
 
 #include "asperity/geometry/shape_mesh.hpp"
 

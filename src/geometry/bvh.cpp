@@ -1,5 +1,5 @@
 // AABB tree over triangles (bvh.hpp).
-#include "asperity/geometry/bvh.hpp"
+#include "geometry/bvh.hpp"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
 // Mass properties from shapes and densities (box, sphere, capsule, cylinder in closed form;
 // convex hulls and closed triangle meshes by the divergence theorem; compounds by summation).
-#include "asperity/geometry/mass.hpp"
+#include "geometry/mass.hpp"
 
 #include <LinearMath/btConvexHullComputer.h>
 

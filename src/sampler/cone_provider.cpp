@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "asperity/dynamics/texture_axis.hpp"
 #include "asperity/friction/patch_cone.hpp"
+#include "dynamics/texture_axis.hpp"
 
 namespace asperity {
 

@@ -9,8 +9,8 @@
 #include <tuple>
 #include <vector>
 
-#include "asperity/geometry/bvh.hpp"
 #include "asperity/geometry/shape_mesh.hpp"
+#include "geometry/bvh.hpp"
 #include "sampler/patch_raster.hpp"
 
 namespace asperity::patch {

@@ -1,6 +1,6 @@
 // Projected Gauss-Seidel on body velocities: contact rows (SPEC 4) and the sweep machinery.
 // Joint rows live in joint_rows.cpp.
-#include "asperity/solver/contact_solver.hpp"
+#include "solver/contact_solver.hpp"
 
 #include <algorithm>
 #include <cmath>

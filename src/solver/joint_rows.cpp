@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "asperity/solver/contact_solver.hpp"
+#include "solver/contact_solver.hpp"
 
 namespace asperity {
 

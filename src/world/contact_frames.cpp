@@ -1,10 +1,11 @@
 // The contact-frame stage (SPEC 5): world, body, auto and texture frame modes.
-#include "asperity/world/contact_frames.hpp"
+#include "world/contact_frames.hpp"
 
 #include <cmath>
 
-#include "asperity/dynamics/texture_axis.hpp"
 #include "asperity/world/world.hpp"
+#include "dynamics/texture_axis.hpp"
+#include "solver/contact_solver.hpp"
 
 namespace asperity {
 

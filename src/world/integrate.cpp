@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "asperity/world/world.hpp"
+#include "solver/contact_solver.hpp"
 
 namespace asperity {
 

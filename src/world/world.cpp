@@ -8,11 +8,11 @@
 #include <cstring>
 #include <string>
 
-#include "asperity/collision/collision_detector.hpp"
 #include "asperity/error.hpp"
 #include "asperity/sampler/constant_provider.hpp"
-#include "asperity/solver/contact_solver.hpp"
 #include "asperity/world/state_check.hpp"
+#include "collision/collision_detector.hpp"
+#include "solver/contact_solver.hpp"
 
 namespace asperity {
 

@@ -1,9 +1,10 @@
 // The middle stages of a step: collision, friction coefficients and the constraint solve.
 #include <algorithm>
 
-#include "asperity/collision/collision_detector.hpp"
 #include "asperity/error.hpp"
 #include "asperity/world/world.hpp"
+#include "collision/collision_detector.hpp"
+#include "solver/contact_solver.hpp"
 
 namespace asperity {
 

@@ -1,6 +1,6 @@
 // Collision stage: contact counts, normals (B to A), depths and witness points against the
 // analytic geometry of resting shapes, from metres down to millimetres; keys, order, filters.
-#include "asperity/collision/collision_detector.hpp"
+#include "collision/collision_detector.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "asperity/collision/signed_distance_field.hpp"
+#include "collision/signed_distance_field.hpp"
 #include "collision_test_scenes.hpp"
 #include "support/test_support.hpp"
 

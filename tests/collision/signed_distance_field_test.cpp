@@ -1,6 +1,6 @@
 // Signed distance fields: values and normals against the analytic distance of a box, the sign
 // inside a nut's bore, closedness, and bad input.
-#include "asperity/collision/signed_distance_field.hpp"
+#include "collision/signed_distance_field.hpp"
 
 #include <gtest/gtest.h>
 

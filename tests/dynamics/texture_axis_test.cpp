@@ -1,5 +1,5 @@
 // The texture's +u axis in world at a contact point (planes and boxes, texture rotation).
-#include "asperity/dynamics/texture_axis.hpp"
+#include "dynamics/texture_axis.hpp"
 
 #include <gtest/gtest.h>
 

@@ -8,9 +8,9 @@
 #include <fstream>
 #include <iterator>
 
-#include "asperity/collision/signed_distance_field.hpp"
 #include "asperity/error.hpp"
 #include "asperity/geometry/mesh_io.hpp"
+#include "collision/signed_distance_field.hpp"
 #include "support/test_support.hpp"
 
 namespace asperity {

@@ -1,5 +1,5 @@
 // The triangle BVH returns exactly what a brute-force box test returns.
-#include "asperity/geometry/bvh.hpp"
+#include "geometry/bvh.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Mass properties against closed-form formulas: primitives, hulls and meshes by the divergence
 // theorem, compounds by the parallel-axis theorem, principal axes.
-#include "asperity/geometry/mass.hpp"
+#include "geometry/mass.hpp"
 
 #include <gtest/gtest.h>
 

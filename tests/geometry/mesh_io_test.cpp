@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "asperity/collision/signed_distance_field.hpp"
 #include "asperity/error.hpp"
+#include "collision/signed_distance_field.hpp"
 #include "support/test_support.hpp"
 
 namespace asperity {

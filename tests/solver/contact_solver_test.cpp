@@ -1,6 +1,6 @@
 // The PGS contact solver on hand-made contacts: normal support, friction bounds of each limit
 // surface (SPEC 1 signs), convergence, warm starting and split impulses.
-#include "asperity/solver/contact_solver.hpp"
+#include "solver/contact_solver.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "asperity/solver/contact_solver.hpp"
+#include "solver/contact_solver.hpp"
 #include "support/test_support.hpp"
 
 namespace asperity {

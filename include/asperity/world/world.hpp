@@ -20,11 +20,14 @@
 #include "asperity/dynamics/joint.hpp"
 #include "asperity/friction/limit_surface.hpp"
 #include "asperity/sampler/friction_provider.hpp"
-#include "asperity/solver/contact_solver.hpp"
 
 namespace asperity {
 
+// Internals of the step (src/): the world owns them but a user never touches them.
 class CollisionDetector;
+class ContactSolver;
+struct SolverJoint;
+struct SolverSettings;
 
 // How each contact's tangent t is chosen (SPEC 5).
 enum class FrameMode {
