@@ -28,8 +28,8 @@ double logoStart(const World& world) {
   if (id == kNoBody) throw Error("tumbling bunnies: no body named 'incline'");
   const Surface& s = world.bodyDesc(id).shapes.at(0).surface;
   double scale = 0.8;  // the emboss generator's default logo width (fraction of the tile)
-  const auto it = s.generator.params.find("scale");
-  if (it != s.generator.params.end()) scale = std::stod(it->second);
+  const auto it = s.source.generator.params.find("scale");
+  if (it != s.source.generator.params.end()) scale = std::stod(it->second);
   return s.texture_size * (0.5 - 0.5 * scale);
 }
 

@@ -82,19 +82,19 @@ Surface parseSurface(JsonReader r, const std::string& base_dir) {
   if (r.has("normal_map")) {
     const nlohmann::json& v = r.value().at("normal_map");
     if (v.is_string())
-      s.normal_map_file = existingFile(r, "normal_map", base_dir);
+      s.source.normal_map_file = existingFile(r, "normal_map", base_dir);
     else if (v.is_object())
-      s.generator = parseGenerator(r.object("normal_map"), base_dir);
+      s.source.generator = parseGenerator(r.object("normal_map"), base_dir);
     else
       r.failAt("normal_map",
                "must be a PNG file name or a generator object, got " + describeValue(v));
   }
-  s.green = r.boolean("directx", false) ? GreenConvention::DirectX : GreenConvention::OpenGL;
+  s.source.green = r.boolean("directx", false) ? GreenConvention::DirectX : GreenConvention::OpenGL;
   s.gain = r.number("gain", s.gain, Range::closed(0.0, 1e4));
   s.texture_size = r.number("texture_size", s.texture_size, Range::positive(kHuge));
   s.texture_rotation =
       radiansFromDegrees(r.number("texture_rotation_deg", 0.0, Range::closed(-1e6, 1e6)));
-  if (r.has("mask")) s.mask_file = existingFile(r, "mask", base_dir);
+  if (r.has("mask")) s.source.mask_file = existingFile(r, "mask", base_dir);
   // Linear RGB albedo for the renderer; no effect on friction.
   s.base_color = r.vec3("base_color", s.base_color, Range::closed(0.0, 1.0));
   r.finish();

@@ -1,16 +1,13 @@
 // From a scene description to a World: resolve every surface's normal map and mask, every OBJ
 // mesh, then create bodies, joints, springs and loads, and install the friction provider.
-#include <iostream>
 #include <map>
 
 #include "asperity/error.hpp"
 #include "asperity/scene/scene.hpp"
 #include "asperity/texture/generators.hpp"
-#include "asperity/texture/map_inspect.hpp"
 #include "asperity/texture/png_io.hpp"
 #include "scene/scene_common.hpp"
 #include "scene/scene_resources.hpp"
-#include "texture/png_codec.hpp"
 
 namespace asperity {
 
@@ -36,54 +33,26 @@ GeneratorSpec resolveGeneratorPaths(GeneratorSpec spec, const std::string& base_
   return spec;
 }
 
-// A grey PNG as a gain mask (rows bottom-up like NormalMap; values in [0, 1]).
-GainMask loadGainMask(const std::string& path) {
-  const std::vector<uint8_t> bytes = png::readFile(path);
-  png::inspect(bytes, path, kMaxTextureSize);
-  const png::Image image = png::decode(bytes, path, kMaxTextureSize, 1);
-  GainMask mask;
-  mask.width = image.header.width;
-  mask.height = image.header.height;
-  mask.values.resize(image.samples.size());
-  const size_t w = static_cast<size_t>(mask.width);
-  const size_t h = static_cast<size_t>(mask.height);
-  for (size_t r = 0; r < h; ++r)
-    for (size_t i = 0; i < w; ++i) mask.values[(h - 1 - r) * w + i] = image.samples[r * w + i];
-  return mask;
-}
-
-// Warns when the map, read with the surface's `directx` setting, has slopes that clearly fit
-// the other green convention (map_inspect: the curl of the implied slope field).
-void warnGreenContradiction(const std::string& path, GreenConvention green, const NormalMap& map) {
-  if (judgeGreenConvention(map).verdict != GreenVerdict::DirectX) return;
-  const bool directx = green == GreenConvention::DirectX;
-  std::cerr << "asperity: warning: " << path
-            << ": the surface says \"directx\": " << (directx ? "true" : "false")
-            << " but the map's slopes fit the " << (directx ? "OpenGL" : "DirectX")
-            << " convention (asperity texture inspect)\n";
-}
-
 }  // namespace
 
 std::shared_ptr<const NormalMap> ResourceCache::normalMap(const Surface& surface) {
   // Files are keyed by their resolved path and green convention, generators by their spec.
   std::string key;
-  if (!surface.normal_map_file.empty())
-    key = "file:" + resolvePath(base_dir_, surface.normal_map_file) +
-          (surface.green == GreenConvention::DirectX ? ":directx" : ":opengl");
-  else if (!surface.generator.name.empty())
-    key = generatorKey(surface.generator);
+  if (!surface.source.normal_map_file.empty())
+    key = "file:" + resolvePath(base_dir_, surface.source.normal_map_file) +
+          (surface.source.green == GreenConvention::DirectX ? ":directx" : ":opengl");
+  else if (!surface.source.generator.name.empty())
+    key = generatorKey(surface.source.generator);
   else
     return nullptr;
   auto& slot = normal_maps_[key];
   if (slot) return slot;
-  if (!surface.normal_map_file.empty()) {
-    const std::string path = resolvePath(base_dir_, surface.normal_map_file);
-    slot = std::make_shared<const NormalMap>(loadNormalMapPng(path, surface.green));
-    warnGreenContradiction(path, surface.green, *slot);
-  } else
-    slot = std::make_shared<const NormalMap>(
-        generateNormalMap(resolveGeneratorPaths(surface.generator, base_dir_)));
+  // Relative paths, the file's and the generator's path parameters, name files beside the scene.
+  SurfaceSource resolved = surface.source;
+  if (!resolved.normal_map_file.empty())
+    resolved.normal_map_file = resolvePath(base_dir_, resolved.normal_map_file);
+  resolved.generator = resolveGeneratorPaths(resolved.generator, base_dir_);
+  slot = loadNormalMap(resolved);
   return slot;
 }
 
@@ -133,11 +102,12 @@ BodyDesc resolveMeshes(const SceneDesc& scene, size_t index, scene::ResourceCach
     const bool hull = shape.type == ShapeType::ConvexHull;
     const std::string ptr =
         body_ptr + "/shapes/" + std::to_string(m.shape) + (hull ? "/mesh" : "/file");
-    const auto asset = withContext(scene, ptr, [&] { return cache.asset(m, shape.surface.green); });
+    const auto asset =
+        withContext(scene, ptr, [&] { return cache.asset(m, shape.surface.source.green); });
     shape.mesh = asset->mesh;
     // The asset's own normal map when the surface names none (SPEC 10).
     Surface& s = shape.surface;
-    if (!s.normal_map && s.normal_map_file.empty() && s.generator.name.empty())
+    if (!s.normal_map && s.source.normal_map_file.empty() && s.source.generator.name.empty())
       s.normal_map = asset->material.normal_map;
   }
   return desc;
@@ -153,7 +123,7 @@ BodyDesc resolveBody(const SceneDesc& scene, size_t index, scene::ResourceCache&
     if (!s.normal_map)
       s.normal_map = withContext(scene, ptr + "/normal_map", [&] { return cache.normalMap(s); });
     if (!s.mask)
-      s.mask = withContext(scene, ptr + "/mask", [&] { return cache.mask(s.mask_file); });
+      s.mask = withContext(scene, ptr + "/mask", [&] { return cache.mask(s.source.mask_file); });
   }
   return resolveMeshes(scene, index, cache, std::move(desc));
 }

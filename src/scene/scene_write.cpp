@@ -47,19 +47,19 @@ json paramsToJson(const GeneratorSpec& spec) {
 
 json surfaceToJson(const Surface& s) {
   json out = json::object();
-  if (!s.normal_map_file.empty()) {
-    out["normal_map"] = s.normal_map_file;
-  } else if (!s.generator.name.empty()) {
-    out["normal_map"] = {{"generator", s.generator.name},
-                         {"params", paramsToJson(s.generator)},
-                         {"size", s.generator.size},
-                         {"seed", s.generator.seed}};
+  if (!s.source.normal_map_file.empty()) {
+    out["normal_map"] = s.source.normal_map_file;
+  } else if (!s.source.generator.name.empty()) {
+    out["normal_map"] = {{"generator", s.source.generator.name},
+                         {"params", paramsToJson(s.source.generator)},
+                         {"size", s.source.generator.size},
+                         {"seed", s.source.generator.seed}};
   }
-  out["directx"] = s.green == GreenConvention::DirectX;
+  out["directx"] = s.source.green == GreenConvention::DirectX;
   out["gain"] = s.gain;
   out["texture_size"] = s.texture_size;
   out["texture_rotation_deg"] = degreesFromRadians(s.texture_rotation);
-  if (!s.mask_file.empty()) out["mask"] = s.mask_file;
+  if (!s.source.mask_file.empty()) out["mask"] = s.source.mask_file;
   out["base_color"] = toJson(s.base_color);
   return out;
 }
@@ -209,13 +209,14 @@ void rebaseScene(SceneDesc& scene, const std::string& folder) {
   for (BodyDesc& body : scene.bodies) {
     for (Shape& shape : body.shapes) {
       Surface& s = shape.surface;
-      rebase(s.normal_map_file, from, to);
-      rebase(s.mask_file, from, to);
+      rebase(s.source.normal_map_file, from, to);
+      rebase(s.source.mask_file, from, to);
       // Generator parameters that name files (height maps).
       for (const GeneratorInfo& g : generatorCatalog())
         for (const GeneratorParam& p : g.params)
-          if (g.name == s.generator.name && p.kind == "path" && s.generator.params.count(p.name))
-            rebase(s.generator.params[p.name], from, to);
+          if (g.name == s.source.generator.name && p.kind == "path" &&
+              s.source.generator.params.count(p.name))
+            rebase(s.source.generator.params[p.name], from, to);
     }
   }
   for (SceneMesh& m : scene.meshes) rebase(m.file, from, to);

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "asperity/error.hpp"
-#include "asperity/sampler/constant_provider.hpp"
+#include "asperity/sampler/cone_provider.hpp"
 #include "asperity/world/state_check.hpp"
 #include "collision/collision_detector.hpp"
 #include "solver/contact_solver.hpp"
@@ -34,7 +34,7 @@ World::World(WorldSettings settings)
     : settings_(std::move(settings)),
       collision_(std::make_unique<CollisionDetector>()),
       solver_(std::make_unique<ContactSolver>()),
-      provider_(std::make_unique<ConstantProvider>()) {}
+      provider_(std::make_unique<ConeProvider>()) {}
 
 World::~World() = default;
 
@@ -77,8 +77,12 @@ void World::step() {
 }
 
 BodyId World::createBody(const BodyDesc& desc) {
-  bodies_.push_back(makeBody(desc));
-  descs_.push_back(desc);
+  // Surfaces described in code by their source alone get their maps here (scenes resolve
+  // theirs beforehand, sharing one map between equal surfaces).
+  BodyDesc resolved = desc;
+  for (Shape& shape : resolved.shapes) resolveSurface(shape.surface);
+  bodies_.push_back(makeBody(resolved));
+  descs_.push_back(std::move(resolved));
   bodies_changed_ = true;
   return static_cast<BodyId>(bodies_.size() - 1);
 }

@@ -73,18 +73,18 @@ TEST(BodyParse, EulerAnglesAboutFixedXThenYThenZ) {
 TEST(BodyParse, GeneratedAndFileSurfaces) {
   const SceneDesc gen = loadScene(test::sourcePath("scenes/examples/generated_surfaces.json"));
   const Surface& saw = gen.bodies[1].shapes[0].surface;
-  EXPECT_EQ(saw.generator.name, "sawtooth");
-  EXPECT_EQ(saw.generator.params.at("period"), "16");
-  EXPECT_EQ(saw.generator.size, 128);
+  EXPECT_EQ(saw.source.generator.name, "sawtooth");
+  EXPECT_EQ(saw.source.generator.params.at("period"), "16");
+  EXPECT_EQ(saw.source.generator.size, 128);
   EXPECT_EQ(saw.gain, 4.0);
   EXPECT_TRUE(test::near(saw.texture_rotation, kPi / 2, 1e-15));
-  EXPECT_EQ(gen.bodies[0].shapes[0].surface.generator.seed, 7u);
+  EXPECT_EQ(gen.bodies[0].shapes[0].surface.source.generator.seed, 7u);
   const SceneDesc png = loadScene(test::sourcePath("scenes/examples/png_surface.json"));
   const Surface& ground = png.bodies[0].shapes[0].surface;
-  EXPECT_EQ(ground.normal_map_file, "textures/ridges.png");
-  EXPECT_EQ(ground.mask_file, "textures/half_mask.png");
-  EXPECT_EQ(ground.green, GreenConvention::OpenGL);
-  EXPECT_EQ(png.bodies[1].shapes[0].surface.green, GreenConvention::DirectX);
+  EXPECT_EQ(ground.source.normal_map_file, "textures/ridges.png");
+  EXPECT_EQ(ground.source.mask_file, "textures/half_mask.png");
+  EXPECT_EQ(ground.source.green, GreenConvention::OpenGL);
+  EXPECT_EQ(png.bodies[1].shapes[0].surface.source.green, GreenConvention::DirectX);
   EXPECT_EQ(png.settings.frame_mode, FrameMode::Texture);
 }
 

@@ -49,7 +49,7 @@ TEST(Instantiate, EqualGeneratedSurfacesShareOneMap) {
   EXPECT_EQ(a.normal_map.get(), b.normal_map.get());
   EXPECT_NE(a.normal_map.get(), surfaceOf(*world, "sawtooth_plane").normal_map.get());
   // The map is the generator's, texel for texel.
-  const NormalMap expected = generateNormalMap(a.generator);
+  const NormalMap expected = generateNormalMap(a.source.generator);
   ASSERT_EQ(a.normal_map->width(), 64);
   EXPECT_EQ(a.normal_map->texels(), expected.texels());
 }

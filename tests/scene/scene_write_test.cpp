@@ -49,7 +49,7 @@ void expectSameBody(const BodyDesc& a, const BodyDesc& b) {
     EXPECT_EQ(s.local.rotation.coeffs(), t.local.rotation.coeffs());
     EXPECT_EQ(s.half_extents, t.half_extents);
     EXPECT_EQ(s.radius, t.radius);
-    EXPECT_EQ(s.surface.generator.params, t.surface.generator.params);
+    EXPECT_EQ(s.surface.source.generator.params, t.surface.source.generator.params);
     EXPECT_EQ(s.surface.texture_rotation, t.surface.texture_rotation);
     EXPECT_EQ(s.surface.gain, t.surface.gain);
     EXPECT_EQ(s.surface.base_color, t.surface.base_color);
@@ -97,9 +97,9 @@ TEST(SceneWrite, RelativePathsFollowTheNewFolder) {
   const std::string original =
       fs::weakly_canonical(test::sourcePath("scenes/examples/textures/ridges.png")).string();
   const std::string resolved =
-      scene::resolvePath(moved.base_dir, moved.bodies[0].shapes[0].surface.normal_map_file);
+      scene::resolvePath(moved.base_dir, moved.bodies[0].shapes[0].surface.source.normal_map_file);
   EXPECT_EQ(fs::weakly_canonical(resolved).string(), original);
-  EXPECT_FALSE(fs::path(moved.bodies[0].shapes[0].surface.normal_map_file).is_absolute());
+  EXPECT_FALSE(fs::path(moved.bodies[0].shapes[0].surface.source.normal_map_file).is_absolute());
   // The OBJ meshes likewise; absolute paths stay absolute.
   const SceneDesc meshes = loadScene(test::sourcePath("scenes/examples/meshes.json"));
   saveScene(meshes, dir + "/meshes.json");

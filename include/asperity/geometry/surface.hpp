@@ -16,24 +16,45 @@ struct GainMask {
   int width = 0;
   int height = 0;
   std::vector<float> values;  // rows bottom-up like NormalMap
-  float sample(float u, float v) const;
 };
 
-struct Surface {
-  // Where the normal map comes from (kept so a scene saves back as it was written).
+// What a user describes about a surface's look: where its normal map and gain mask come from.
+// Scenes keep it so that they save back as they were written.
+struct SurfaceSource {
   std::string normal_map_file;  // PNG path; empty when generated or flat
   GeneratorSpec generator;      // used when generator.name is not empty
   GreenConvention green = GreenConvention::OpenGL;
   std::string mask_file;  // optional gain mask PNG (grey); empty = none
 
+  // True when it names a normal map (a file or a generator).
+  bool namesNormalMap() const { return !normal_map_file.empty() || !generator.name.empty(); }
+};
+
+// A surface as the step uses it: the source it was described by and the data resolved from it.
+// A world resolves what is still unresolved when a body is created (World::createBody), so a
+// surface built in code from a source alone is never silently flat.
+struct Surface {
+  SurfaceSource source;
+
   // Resolved data shared between shapes (null normal map = flat surface).
   std::shared_ptr<const NormalMap> normal_map;
   std::shared_ptr<const GainMask> mask;
 
-  double gain = 1.0;           // k of Eq. 7 (unit: 1)
-  double texture_size = 0.25;  // metres covered by one repeat of the texture (u and v)
-  double texture_rotation = 0.0;  // radians, rotates the texture within the face's UV plane
+  double gain = 1.0;                      // k of Eq. 7 (unit: 1)
+  double texture_size = 0.25;             // metres covered by one repeat of the texture (u and v)
+  double texture_rotation = 0.0;          // radians, rotates the texture within the face's UV plane
   Vec3 base_color = Vec3(0.7, 0.7, 0.7);  // linear RGB albedo the renderer shades with (0..1)
 };
+
+// The normal map `source` names, read (with a warning on stderr when the map's slopes
+// contradict source.green) or generated; null when it names none. Paths are used as given.
+// Throws asperity::Error naming the file or the generator parameter.
+std::shared_ptr<const NormalMap> loadNormalMap(const SurfaceSource& source);
+
+// A grey PNG as a gain mask (values in [0, 1]). Throws asperity::Error naming the file.
+GainMask loadGainMask(const std::string& path);
+
+// Fills the surface's normal map and mask from its source where they are still null.
+void resolveSurface(Surface& surface);
 
 }  // namespace asperity

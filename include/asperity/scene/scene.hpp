@@ -59,7 +59,7 @@ struct SceneCamera {
 
 struct SceneDesc {
   WorldSettings settings;
-  std::string sampler = "cone";  // friction provider (InstantiateOptions::providers)
+  std::string sampler = kDefaultSampler;  // friction provider (InstantiateOptions::providers)
   std::vector<BodyDesc> bodies;  // shapes' normal maps unresolved (files / generator specs)
   std::vector<SceneJoint> joints;
   std::vector<SceneSpring> springs;

@@ -97,7 +97,7 @@ class World {
   // Adds a timed load. Throws asperity::Error for an unknown body.
   void addLoad(const LoadDesc& desc);
 
-  // The friction stage (default: ConstantProvider with settings().friction.mu0).
+  // The friction stage (default: ConeProvider, kDefaultSampler, as for scenes).
   void setFrictionProvider(std::unique_ptr<FrictionProvider> provider);
   FrictionProvider& frictionProvider() { return *provider_; }
   void setFrameCallback(FrameCallback callback) { frame_callback_ = std::move(callback); }
