@@ -12,11 +12,11 @@
 
 namespace asperity {
 
-// What every provider needs to know (SPEC 3, Eq. 7).
 // The friction provider of a world built in code and of a scene that names none: whole-texture
 // cones (sampler/cone_provider.hpp), anisotropic from the textures at almost no cost.
 inline constexpr const char* kDefaultSampler = "cone";
 
+// What every provider needs to know (SPEC 3, Eq. 7).
 struct FrictionSettings {
   int directions = 4;         // N
   double mu0 = 0.2;           // nominal coefficient (unit: 1)
