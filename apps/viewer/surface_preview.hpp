@@ -5,8 +5,8 @@
 #include <memory>
 
 #include "asperity/friction/patch_cone.hpp"
-#include "asperity/gl/objects.hpp"
 #include "asperity/texture/normal_map.hpp"
+#include "gl/objects.hpp"
 
 namespace asperity::viewer {
 

@@ -1,5 +1,5 @@
 // Name creation and deletion for the RAII handles, and completeness checks.
-#include "asperity/gl/objects.hpp"
+#include "gl/objects.hpp"
 
 #include <cstdio>
 #include <string>

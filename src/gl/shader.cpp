@@ -1,5 +1,5 @@
 // Shader compilation and linking with readable one-line errors.
-#include "asperity/gl/shader.hpp"
+#include "gl/shader.hpp"
 
 #include <algorithm>
 #include <utility>

@@ -1,10 +1,10 @@
 // Draws a DebugDrawList: filled polygons (translucent), lines, then round points.
 #pragma once
 
-#include "asperity/gl/objects.hpp"
-#include "asperity/gl/shader.hpp"
 #include "asperity/render/camera.hpp"
 #include "asperity/world/debug_draw.hpp"
+#include "gl/objects.hpp"
+#include "gl/shader.hpp"
 
 namespace asperity::render {
 

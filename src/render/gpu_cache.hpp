@@ -6,8 +6,8 @@
 #include <unordered_map>
 
 #include "asperity/geometry/shape_mesh.hpp"
-#include "asperity/gl/objects.hpp"
 #include "asperity/texture/normal_map.hpp"
+#include "gl/objects.hpp"
 
 namespace asperity::render {
 

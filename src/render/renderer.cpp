@@ -9,7 +9,7 @@
 #include <cstdint>
 
 #include "asperity/error.hpp"
-#include "asperity/gl/shader.hpp"
+#include "gl/shader.hpp"
 #include "render/debug_pass.hpp"
 #include "render/gpu_cache.hpp"
 #include "render/shaders.hpp"

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "asperity/error.hpp"
-#include "asperity/gl/objects.hpp"
-#include "asperity/gl/shader.hpp"
+#include "gl/objects.hpp"
+#include "gl/shader.hpp"
 #include "render_test_support.hpp"
 
 namespace asperity {

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "asperity/geometry/surface.hpp"
-#include "asperity/gl/objects.hpp"
-#include "asperity/gl/shader.hpp"
+#include "gl/objects.hpp"
+#include "gl/shader.hpp"
 
 namespace asperity::glpatch {
 
