@@ -1,6 +1,5 @@
 // `asperity sweep SCENE --vary PATH=SPEC ...`: an ensemble of independent runs of one scene
 // with varied numbers, on a oneTBB pool, written as one CSV row per sample (src/sweep).
-#include <malloc.h>
 
 #include <fstream>
 #include <memory>
@@ -41,11 +40,6 @@ void runSweep(const SweepOptions& opt) {
   // Prove the output can be written before the runs.
   std::ofstream out(opt.out, std::ios::binary);
   if (!out) throw Error("--out: cannot open \"" + opt.out + "\" for writing");
-  // Every sample builds its textures anew: with glibc's defaults those buffers are mapped and
-  // unmapped each time, and the page faults and unmaps (which serialise threads) cost about
-  // half the CPU time of a sweep. Keep freed memory in the heap instead (this process only).
-  mallopt(M_MMAP_THRESHOLD, 256 << 20);
-  mallopt(M_TRIM_THRESHOLD, 512 << 20);
   const std::vector<SampleResult> results = sweep.runAll(opt.threads);
   out << sweep.csv(results);
   if (!out) throw Error("--out: write to \"" + opt.out + "\" failed");

@@ -1,6 +1,7 @@
 // From a scene description to a World: resolve every surface's normal map and mask, every OBJ
 // mesh, then create bodies, joints, springs and loads, and install the friction provider.
 #include <map>
+#include <mutex>
 
 #include "asperity/error.hpp"
 #include "asperity/scene/scene.hpp"
@@ -76,6 +77,15 @@ std::shared_ptr<const ImportedAsset> ResourceCache::asset(const SceneMesh& sourc
 
 }  // namespace scene
 
+// One resource cache per folder that the scenes' relative paths resolve against.
+struct SceneResources::Impl {
+  std::mutex mutex;
+  std::map<std::string, scene::ResourceCache> caches;
+};
+
+SceneResources::SceneResources() : impl_(std::make_unique<Impl>()) {}
+SceneResources::~SceneResources() = default;
+
 namespace {
 
 // Runs `f`, prefixing any error with the scene file and the JSON pointer of the culprit.
@@ -141,12 +151,21 @@ std::unique_ptr<World> instantiate(const SceneDesc& scene, const InstantiateOpti
   auto world = std::make_unique<World>(scene.settings);
   world->setFrictionProvider(withContext(scene, "/settings/sampler",
                                          [&] { return options.providers.make(scene.sampler); }));
-  // Bodies, with equal surfaces and meshes sharing one resolved copy.
-  scene::ResourceCache cache(scene.base_dir);
-  for (size_t i = 0; i < scene.bodies.size(); ++i) {
-    const BodyDesc desc = resolveBody(scene, i, cache);
-    withContext(scene, "/bodies/" + std::to_string(i), [&] { return world->createBody(desc); });
+  // Bodies, with equal surfaces and meshes sharing one resolved copy (across worlds too when
+  // the caller shares its resources); one instantiation resolves at a time per resources.
+  const auto resources = options.resources ? options.resources : std::make_shared<SceneResources>();
+  std::vector<BodyDesc> resolved;
+  {
+    SceneResources::Impl& shared = resources->impl();
+    const std::lock_guard lock(shared.mutex);
+    scene::ResourceCache& cache =
+        shared.caches.try_emplace(scene.base_dir, scene.base_dir).first->second;
+    for (size_t i = 0; i < scene.bodies.size(); ++i)
+      resolved.push_back(resolveBody(scene, i, cache));
   }
+  for (size_t i = 0; i < resolved.size(); ++i)
+    withContext(scene, "/bodies/" + std::to_string(i),
+                [&] { return world->createBody(resolved[i]); });
   // Joints, springs and loads, with names turned into ids.
   for (size_t i = 0; i < scene.joints.size(); ++i) {
     const std::string ptr = "/joints/" + std::to_string(i);

@@ -89,7 +89,9 @@ SampleResult Sweep::run(int64_t index) const {
     for (const std::string& p : pointers_[j]) json[nlohmann::json::json_pointer(p)] = r.values[j];
   std::unique_ptr<World> world;
   try {
-    world = instantiate(parseScene(json, desc_.scene_file));
+    InstantiateOptions options;
+    options.resources = resources_;
+    world = instantiate(parseScene(json, desc_.scene_file), options);
   } catch (const Error& e) {
     throw Error("sample " + std::to_string(index) + ": " + e.what());
   }

@@ -54,6 +54,26 @@ TEST(Instantiate, EqualGeneratedSurfacesShareOneMap) {
   EXPECT_EQ(a.normal_map->texels(), expected.texels());
 }
 
+// Worlds instantiated with one SceneResources share their maps; without, each has its own,
+// and either way they simulate the same bits.
+TEST(Instantiate, SharedResourcesShareMapsAcrossWorlds) {
+  const SceneDesc scene = example("generated_surfaces.json");
+  const auto shared = std::make_shared<SceneResources>();
+  const InstantiateOptions options(FrictionProviders::builtIn(), shared);
+  const std::unique_ptr<World> first = instantiate(scene, options);
+  const std::unique_ptr<World> second = instantiate(scene, options);
+  const std::unique_ptr<World> own = instantiate(scene);
+  const Surface& a = surfaceOf(*first, "sawtooth_plane");
+  ASSERT_NE(a.normal_map, nullptr);
+  EXPECT_EQ(a.normal_map.get(), surfaceOf(*second, "sawtooth_plane").normal_map.get());
+  EXPECT_NE(a.normal_map.get(), surfaceOf(*own, "sawtooth_plane").normal_map.get());
+  for (int i = 0; i < 50; ++i) {
+    second->step();
+    own->step();
+  }
+  EXPECT_EQ(second->stateHash(), own->stateHash());
+}
+
 TEST(Instantiate, PngMapsFollowTheGreenConventionAndMasksLoad) {
   const std::unique_ptr<World> world = instantiate(example("png_surface.json"));
   const Surface& ground = surfaceOf(*world, "ground");

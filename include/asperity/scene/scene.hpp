@@ -86,8 +86,33 @@ void saveScene(const SceneDesc& scene, const std::string& path);
 // NormalMap), masks and meshes, creates bodies, joints, springs and loads, and installs the
 // friction provider `scene.sampler` from options.providers. Throws asperity::Error naming the
 // file and culprit.
+// Normal maps, masks and asset meshes that instantiate() loads or generates, kept for reuse:
+// worlds instantiated with the same SceneResources share one copy of each, so an ensemble of
+// runs (asperity sweep) reads every file and generates every texture once. Worlds only read
+// what they share. Safe to use from several threads at once.
+class SceneResources {
+ public:
+  SceneResources();
+  ~SceneResources();
+  SceneResources(const SceneResources&) = delete;
+  SceneResources& operator=(const SceneResources&) = delete;
+
+  struct Impl;  // defined by the scene library
+  Impl& impl() { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
 struct InstantiateOptions {
+  InstantiateOptions() = default;
+  // Implicit, so that instantiate(scene, {providers}) reads naturally.
+  InstantiateOptions(FrictionProviders table, std::shared_ptr<SceneResources> shared = nullptr)
+      : providers(std::move(table)), resources(std::move(shared)) {}
+
   FrictionProviders providers = FrictionProviders::builtIn();  // the names scenes may ask for
+  // Shared across instantiations when set; null: this world's own, dropped afterwards.
+  std::shared_ptr<SceneResources> resources;
 };
 std::unique_ptr<World> instantiate(const SceneDesc& scene, const InstantiateOptions& options = {});
 

@@ -11,12 +11,14 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "asperity/math/types.hpp"
+#include "asperity/scene/scene.hpp"
 
 namespace asperity {
 
@@ -94,6 +96,8 @@ class Sweep {
   std::vector<std::vector<std::string>> pointers_;  // per variation, its expanded pointers
   std::vector<std::string> body_names_;
   std::vector<std::pair<int, size_t>> measures_;  // (kind index, body index)
+  // Textures and meshes loaded once and shared by every sample's world.
+  std::shared_ptr<SceneResources> resources_ = std::make_shared<SceneResources>();
   int64_t steps_ = 0;
 };
 
