@@ -102,6 +102,8 @@ void addLoad(PyWorld& w, const std::string& body, LoadDesc::Kind kind, const Vec
   if (!point.is_none())
     load.local_point =
         w.world->body(load.body).descriptionPose().applyInverse(vec3Arg(point, "point"));
+  // Loads that have done their work go first: a controller adds one every step.
+  w.world->removeFinishedLoads();
   w.world->addLoad(load);
 }
 

@@ -135,6 +135,16 @@ void World::addLoad(const LoadDesc& desc) {
   loads_.push_back(desc);
 }
 
+size_t World::removeFinishedLoads() {
+  // The same tolerance as the drivers' stage: a load ending or firing within 1e-9 dt of now.
+  const double eps = 1e-9 * settings_.dt;
+  const auto finished = [&](const LoadDesc& l) {
+    const bool once = l.kind == LoadDesc::Kind::Impulse || l.kind == LoadDesc::Kind::AngularImpulse;
+    return once ? l.start < time_ - eps : time_ >= l.end - eps;
+  };
+  return std::erase_if(loads_, finished);
+}
+
 void World::setFrictionProvider(std::unique_ptr<FrictionProvider> provider) {
   if (!provider) throw Error("World::setFrictionProvider: provider is null");
   provider_ = std::move(provider);

@@ -162,6 +162,36 @@ TEST(World, BadInputIsRejectedWithItsName) {
   EXPECT_THROW(world.step(), Error);
 }
 
+// Finished loads leave the list; the ones still to act stay, and the motion is unchanged.
+TEST(World, FinishedLoadsAreDroppedWithoutChangingTheMotion) {
+  const auto build = [](World& world) {
+    world.settings().gravity = Vec3::Zero();
+    const BodyId cube = world.createBody(boxDesc("cube", Vec3::Constant(0.1), {}));
+    LoadDesc push{"push", cube, LoadDesc::Kind::Force, Vec3(1, 0, 0), Vec3::Zero(), 0.0, 0.05};
+    LoadDesc kick{"kick", cube, LoadDesc::Kind::Impulse, Vec3(0, 1, 0), Vec3::Zero(), 0.02};
+    LoadDesc later{"later", cube, LoadDesc::Kind::Impulse, Vec3(0, 0, 1), Vec3::Zero(), 0.5};
+    LoadDesc spin{"spin", cube, LoadDesc::Kind::Torque, Vec3(0, 0, 1), Vec3::Zero(), 0.0, 1.0};
+    for (const LoadDesc& l : {push, kick, later, spin}) world.addLoad(l);
+  };
+  World pruned, kept;
+  build(pruned);
+  build(kept);
+  for (int i = 0; i < 10; ++i) {  // t = 0.1 s: push has ended, kick has fired
+    pruned.step();
+    kept.step();
+  }
+  EXPECT_EQ(pruned.removeFinishedLoads(), 2u);
+  ASSERT_EQ(pruned.loads().size(), 2u);
+  EXPECT_EQ(pruned.loads()[0].name, "later");
+  EXPECT_EQ(pruned.loads()[1].name, "spin");
+  for (int i = 0; i < 60; ++i) {
+    pruned.step();
+    kept.step();
+  }
+  EXPECT_EQ(pruned.stateHash(), kept.stateHash());
+  EXPECT_EQ(pruned.removeFinishedLoads(), 1u);  // "later" fired at 0.5 s
+}
+
 TEST(World, LookupsAndClock) {
   World world;
   world.createBody(groundPlaneDesc());

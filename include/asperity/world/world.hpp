@@ -96,6 +96,10 @@ class World {
   int addSpring(const SpringDesc& desc);
   // Adds a timed load. Throws asperity::Error for an unknown body.
   void addLoad(const LoadDesc& desc);
+  // Drops the loads that can no longer act (forces and torques past their end, impulses already
+  // fired), so that a controller adding loads step after step keeps the list short. Returns
+  // how many it dropped. The state a step produces does not change.
+  size_t removeFinishedLoads();
 
   // The friction stage (default: ConeProvider, kDefaultSampler, as for scenes).
   void setFrictionProvider(std::unique_ptr<FrictionProvider> provider);
