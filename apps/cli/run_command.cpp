@@ -35,6 +35,7 @@ struct RunOptions {
   std::optional<int> directions;        // N
   std::optional<double> patch_width;    // w (m)
   std::optional<int> patch_resolution;  // R
+  std::optional<int> threads;           // worker threads of a step (0 = every core)
   bool hash = false;
 };
 
@@ -178,6 +179,7 @@ SceneDesc loadWithOverrides(const RunOptions& opt, const FrictionProviders& prov
   if (opt.directions) friction.directions = *opt.directions;
   if (opt.patch_width) friction.patch_width = *opt.patch_width;
   if (opt.patch_resolution) friction.patch_resolution = *opt.patch_resolution;
+  if (opt.threads) scene.settings.threads = *opt.threads;
   return scene;
 }
 
@@ -268,6 +270,9 @@ void registerRunCommand(CLI::App& app) {
       ->check(CLI::Range(kMinDirections, kMaxDirections));
   sub->add_option("--patch-width", opt->patch_width, "Patch width w (m, SPEC 3)")
       ->check(numberInRange(1e-6, 100.0));
+  sub->add_option("--threads", opt->threads,
+                  "Worker threads of a step (0 = every core); the results do not change")
+      ->check(CLI::Range(0, kMaxThreads));
   sub->add_option("--patch-res", opt->patch_resolution, "Patch resolution R (pixels per side)")
       ->check(CLI::Range(1, 256));
 

@@ -8,6 +8,7 @@
 
 #include "asperity/friction/directions.hpp"
 #include "asperity/friction/fragment_model.hpp"
+#include "parallel/thread_pool.hpp"
 #include "sampler/patch_common.hpp"
 #include "sampler/patch_geometry.hpp"
 #include "sampler/patch_shade.hpp"
@@ -177,12 +178,29 @@ void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& conta
 void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                                           const FrictionSettings& settings) {
   validatePatchSettings(settings, "cpu sampler");
-  State& st = *state_;
-  st.patch_ms = st.averaging_ms = 0.0;
-  // One contact after the other; scratch is reused.
-  for (Contact& c : contacts) st.sample(bodies, c, settings, nullptr);
-  patch_ms_ = st.patch_ms;
-  averaging_ms_ = st.averaging_ms;
+  if (!pool_ || pool_->concurrency() == 1) {
+    // One contact after the other; scratch is reused.
+    State& st = *state_;
+    st.patch_ms = st.averaging_ms = 0.0;
+    for (Contact& c : contacts) st.sample(bodies, c, settings, nullptr);
+    patch_ms_ = st.patch_ms;
+    averaging_ms_ = st.averaging_ms;
+    return;
+  }
+  // Each contact is sampled alone (it writes only itself), with the scratch of the thread
+  // that runs it: the coefficients are the same whichever thread that is.
+  while (worker_states_.size() < static_cast<size_t>(pool_->concurrency()))
+    worker_states_.push_back(std::make_unique<State>());
+  for (auto& st : worker_states_) st->patch_ms = st->averaging_ms = 0.0;
+  pool_->forEach(contacts.size(), 4, [&](size_t i) {
+    State& st = *worker_states_[static_cast<size_t>(ThreadPool::slot())];
+    st.sample(bodies, contacts[i], settings, nullptr);
+  });
+  patch_ms_ = averaging_ms_ = 0.0;
+  for (const auto& st : worker_states_) {
+    patch_ms_ += st->patch_ms;
+    averaging_ms_ += st->averaging_ms;
+  }
 }
 
 }  // namespace asperity

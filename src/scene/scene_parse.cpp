@@ -49,6 +49,7 @@ void parseSettings(JsonReader r, SceneDesc& scene) {
   s.dt = r.number("dt", s.dt, Range::leftOpen(0.0, 1.0));
   s.iterations = r.integer("iterations", s.iterations, 1, 10000);
   s.substeps = r.integer("substeps", s.substeps, 1, 1000);
+  s.threads = r.integer("threads", s.threads, 0, kMaxThreads);
   s.gravity = r.vec3("gravity", s.gravity, Range::closed(-kHuge, kHuge));
   s.limit_surface = r.enumeration("friction", s.limit_surface, kLimitSurfaceNames);
   s.frame_mode = r.enumeration("frame", s.frame_mode, kFrameModeNames);

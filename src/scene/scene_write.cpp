@@ -130,6 +130,7 @@ json settingsToJson(const SceneDesc& scene) {
   return {{"dt", s.dt},
           {"iterations", s.iterations},
           {"substeps", s.substeps},
+          {"threads", s.threads},
           {"gravity", toJson(s.gravity)},
           {"friction", enumName(s.limit_surface, kLimitSurfaceNames)},
           {"frame", enumName(s.frame_mode, kFrameModeNames)},

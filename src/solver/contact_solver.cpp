@@ -7,11 +7,15 @@
 #include <tuple>
 #include <type_traits>
 
+#include "parallel/thread_pool.hpp"
 #include "solver/inline_projections.hpp"
 
 namespace asperity {
 
 namespace {
+
+// Fewest rows (contacts and joint rows) that the islands are swept in parallel for.
+constexpr size_t kParallelRows = 256;
 
 // Tag for the frictionless pass (frame mode Auto): normal rows only.
 struct NoFriction {};
@@ -245,11 +249,17 @@ void ContactSolver::warmStartRow(const Cached& cached, ContactRow& row, size_t i
 }
 
 void ContactSolver::applyImpulse(int a, int b, const Vec3& p, const Vec3& ia, const Vec3& ib) {
-  // Impulse p on A at its contact (I^-1 (r x p) given as ia), the opposite on B.
-  v_[static_cast<size_t>(a)] += inv_mass_[static_cast<size_t>(a)] * p;
-  w_[static_cast<size_t>(a)] += ia;
-  v_[static_cast<size_t>(b)] -= inv_mass_[static_cast<size_t>(b)] * p;
-  w_[static_cast<size_t>(b)] -= ib;
+  // Impulse p on A at its contact (I^-1 (r x p) given as ia), the opposite on B. Bodies that
+  // do not move take nothing (and are not written: islands share them across threads).
+  const size_t ua = static_cast<size_t>(a), ub = static_cast<size_t>(b);
+  if (inv_mass_[ua] > 0.0) {
+    v_[ua] += inv_mass_[ua] * p;
+    w_[ua] += ia;
+  }
+  if (inv_mass_[ub] > 0.0) {
+    v_[ub] -= inv_mass_[ub] * p;
+    w_[ub] -= ib;
+  }
 }
 
 void ContactSolver::warmStart() {
@@ -265,9 +275,10 @@ void ContactSolver::warmStart() {
 }
 
 template <class Limit>
-double ContactSolver::sweepContacts(std::span<const Limit> limits) {
+double ContactSolver::sweepContacts(std::span<const Limit> limits, std::span<const int> rows) {
   double delta2 = 0.0;
-  for (size_t i = 0; i < rows_.size(); ++i) {
+  for (const int row : rows) {
+    const size_t i = static_cast<size_t>(row);
     ContactRow& r = rows_[i];
     const size_t a = static_cast<size_t>(r.a), b = static_cast<size_t>(r.b);
     // Local copies: the compiler need not reload the row after each velocity write.
@@ -313,9 +324,11 @@ double ContactSolver::sweepContacts(std::span<const Limit> limits) {
     wa += ia;
     vb -= imb * p;
     wb -= ib;
-    v_[a] = va;
-    w_[a] = wa;
     // Static and kinematic bodies keep their velocity: no store, no false dependency.
+    if (ima > 0.0) {
+      v_[a] = va;
+      w_[a] = wa;
+    }
     if (imb > 0.0) {
       v_[b] = vb;
       w_[b] = wb;
@@ -332,31 +345,101 @@ void ContactSolver::solvePositionRow(ContactRow& r, size_t a, size_t b) {
   const double lp = std::max(0.0, r.lambda_p + (r.target_p - vn) * r.mass_n);
   const double dp = lp - r.lambda_p;
   r.lambda_p = lp;
-  vp_[a] += (inv_mass_[a] * dp) * r.n;
-  wp_[a] += dp * r.ia_n;
-  vp_[b] -= (inv_mass_[b] * dp) * r.n;
-  wp_[b] -= dp * r.ib_n;
+  if (inv_mass_[a] > 0.0) {
+    vp_[a] += (inv_mass_[a] * dp) * r.n;
+    wp_[a] += dp * r.ia_n;
+  }
+  if (inv_mass_[b] > 0.0) {
+    vp_[b] -= (inv_mass_[b] * dp) * r.n;
+    wp_[b] -= dp * r.ib_n;
+  }
 }
 
-void ContactSolver::iterate(int iterations) {
+int ContactSolver::findRoot(int body) {
+  // Path halving: every other node on the way points to its grandparent.
+  size_t x = static_cast<size_t>(body);
+  while (root_[x] != static_cast<int>(x)) {
+    root_[x] = root_[static_cast<size_t>(root_[x])];
+    x = static_cast<size_t>(root_[x]);
+  }
+  return static_cast<int>(x);
+}
+
+void ContactSolver::buildIslands() {
+  // Moving bodies joined by a joint or contact row share an island; static and kinematic
+  // bodies join nothing (their velocities are read, never written).
+  const size_t n = v_.size();
+  root_.resize(n);
+  for (size_t i = 0; i < n; ++i) root_[i] = static_cast<int>(i);
+  auto moving = [&](int body) { return inv_mass_[static_cast<size_t>(body)] > 0.0; };
+  auto unite = [&](int a, int b) {
+    if (moving(a) && moving(b)) root_[static_cast<size_t>(findRoot(a))] = findRoot(b);
+  };
+  for (const BallRow& r : balls_) unite(r.a, r.b);
+  for (const AxisRow& r : axes_) unite(r.a, r.b);
+  for (const ContactRow& r : rows_) unite(r.a, r.b);
+  // Islands numbered in order of first appearance: the same numbering on every thread count.
+  island_of_.assign(n, -1);
+  for (size_t k = 0; k < island_count_; ++k) {
+    islands_[k].balls.clear();
+    islands_[k].axes.clear();
+    islands_[k].contacts.clear();
+  }
+  island_count_ = 0;
+  auto islandOf = [&](int a, int b) -> Island& {
+    int& id = island_of_[static_cast<size_t>(findRoot(moving(a) ? a : b))];
+    if (id < 0) {
+      id = static_cast<int>(island_count_++);
+      if (islands_.size() < island_count_) islands_.emplace_back();
+    }
+    return islands_[static_cast<size_t>(id)];
+  };
+  for (size_t i = 0; i < balls_.size(); ++i)
+    islandOf(balls_[i].a, balls_[i].b).balls.push_back(static_cast<int>(i));
+  for (size_t i = 0; i < axes_.size(); ++i)
+    islandOf(axes_[i].a, axes_[i].b).axes.push_back(static_cast<int>(i));
+  for (size_t i = 0; i < rows_.size(); ++i)
+    islandOf(rows_[i].a, rows_[i].b).contacts.push_back(static_cast<int>(i));
+}
+
+double ContactSolver::sweepIsland(const Island& island, int iterations) {
+  // Fixed order: joints, contacts (with the projection chosen once), position rows.
+  double delta2 = 0.0;
+  for (int it = 0; it < iterations; ++it) {
+    delta2 = sweepJoints(island);
+    const std::span<const int> rows(island.contacts);
+    if (!friction_) {
+      delta2 += sweepContacts(std::span<const NoFriction>(), rows);
+    } else if (settings_.limit_surface == LimitSurfaceKind::Coulomb) {
+      delta2 += sweepContacts(std::span<const CoulombLimit>(coulomb_), rows);
+    } else if (settings_.limit_surface == LimitSurfaceKind::Box) {
+      delta2 += sweepContacts(std::span<const BoxLimit>(box_), rows);
+    } else {
+      delta2 += sweepContacts(std::span<const PolygonLimit>(polygon_), rows);
+    }
+  }
+  return delta2;
+}
+
+void ContactSolver::iterate(int iterations, const ThreadPool* pool) {
   if (!warm_started_) {
     if (settings_.warm_starting) warmStart();
     warm_started_ = true;
   }
-  for (int it = 0; it < iterations; ++it) {
-    // Fixed order: joints, contacts (with the projection chosen once), position rows.
-    double delta2 = sweepJoints();
-    if (!friction_) {
-      delta2 += sweepContacts(std::span<const NoFriction>());
-    } else if (settings_.limit_surface == LimitSurfaceKind::Coulomb) {
-      delta2 += sweepContacts(std::span<const CoulombLimit>(coulomb_));
-    } else if (settings_.limit_surface == LimitSurfaceKind::Box) {
-      delta2 += sweepContacts(std::span<const BoxLimit>(box_));
-    } else {
-      delta2 += sweepContacts(std::span<const PolygonLimit>(polygon_));
-    }
-    last_delta_ = std::sqrt(delta2);
+  buildIslands();
+  island_delta_.assign(island_count_, 0.0);
+  auto sweep = [&](size_t k) { island_delta_[k] = sweepIsland(islands_[k], iterations); };
+  // Threads pay off only when there is enough to sweep: waking them costs tens of us.
+  const size_t rows = rows_.size() + balls_.size() + axes_.size();
+  if (pool && island_count_ > 1 && rows >= kParallelRows) {
+    pool->forEach(island_count_, 1, sweep);
+  } else {
+    for (size_t k = 0; k < island_count_; ++k) sweep(k);
   }
+  // The last sweep's impulse changes, summed in island order.
+  double delta2 = 0.0;
+  for (size_t k = 0; k < island_count_; ++k) delta2 += island_delta_[k];
+  last_delta_ = std::sqrt(delta2);
 }
 
 void ContactSolver::finish(std::span<Body> bodies, std::span<Contact> contacts) {

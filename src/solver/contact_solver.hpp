@@ -26,6 +26,8 @@
 
 namespace asperity {
 
+class ThreadPool;
+
 struct SolverSettings {
   double dt = 0.01;  // s
   LimitSurfaceKind limit_surface = LimitSurfaceKind::Box;
@@ -59,8 +61,11 @@ class ContactSolver {
   // Contact rows. With friction, contacts carry their frame (t, b) and mu; without, only the
   // normal rows are solved (frame mode Auto's first pass).
   void setContacts(std::span<const Contact> contacts, bool friction);
-  // Warm start (first call after setContacts only) and `iterations` PGS sweeps.
-  void iterate(int iterations);
+  // Warm start (first call after setContacts only) and `iterations` PGS sweeps. The rows fall
+  // into islands that share no moving body; each island is swept on its own (on `pool`'s
+  // threads when given), its rows in the global sweep order, which gives exactly the bits of
+  // one sweep over all rows: rows of other islands never read its bodies.
+  void iterate(int iterations, const ThreadPool* pool = nullptr);
   // Writes velocities and impulses back and remembers them for the next step's warm start.
   void finish(std::span<Body> bodies, std::span<Contact> contacts);
 
@@ -124,10 +129,17 @@ class ContactSolver {
   void addAngularRow(int a, int b, int joint, int slot, const Vec3& u, double target);
   void addAxisRow(AxisRow row);
   void storeJointImpulses();
+  // Rows (indices into balls_, axes_, rows_, ascending) that touch one group of moving bodies.
+  struct Island {
+    std::vector<int> balls, axes, contacts;
+  };
+  void buildIslands();
+  int findRoot(int body);
+  double sweepIsland(const Island& island, int iterations);
   template <class Limit>
-  double sweepContacts(std::span<const Limit> limits);
+  double sweepContacts(std::span<const Limit> limits, std::span<const int> rows);
   void solvePositionRow(ContactRow& r, size_t a, size_t b);
-  double sweepJoints();
+  double sweepJoints(const Island& island);
   void applyImpulse(int a, int b, const Vec3& p, const Vec3& ia, const Vec3& ib);
 
   SolverSettings settings_;
@@ -151,6 +163,12 @@ class ContactSolver {
   std::vector<BallRow> balls_;
   std::vector<AxisRow> axes_;
   std::vector<double> joint_lambda_;  // 6 slots per joint, kept for the next warm start
+  // Islands of this solve, reused across steps (only the first island_count_ are live).
+  std::vector<Island> islands_;
+  size_t island_count_ = 0;
+  std::vector<int> root_;       // union-find over bodies
+  std::vector<int> island_of_;  // island of a root body, -1 before it has one
+  std::vector<double> island_delta_;
   // Warm-start cache of the previous step, sorted by key.
   std::vector<Cached> cache_;
   double last_delta_ = 0.0;

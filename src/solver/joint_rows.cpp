@@ -135,12 +135,13 @@ void ContactSolver::storeJointImpulses() {
   }
 }
 
-double ContactSolver::sweepJoints() {
+double ContactSolver::sweepJoints(const Island& island) {
   double delta2 = 0.0;
   // Ball blocks: P = -K^-1 Cdot on the velocities, applied at both anchors. The drift is
   // removed on the pseudo-velocities (split impulse, as for contacts): a Baumgarte bias in
   // the velocities would be real motion that friction has to hold (a chain on a rod creeps).
-  for (BallRow& r : balls_) {
+  for (const int index : island.balls) {
+    BallRow& r = balls_[static_cast<size_t>(index)];
     const size_t a = static_cast<size_t>(r.a), b = static_cast<size_t>(r.b);
     const Vec3 cdot = (v_[a] + w_[a].cross(r.ra)) - (v_[b] + w_[b].cross(r.rb));
     const Vec3 p = -(r.inv_k * cdot);
@@ -150,13 +151,18 @@ double ContactSolver::sweepJoints() {
     // Pseudo-velocity block toward -bias.
     const Vec3 cdot_p = (vp_[a] + wp_[a].cross(r.ra)) - (vp_[b] + wp_[b].cross(r.rb));
     const Vec3 pp = -(r.inv_k * (cdot_p + r.bias));
-    vp_[a] += inv_mass_[a] * pp;
-    wp_[a] += inv_inertia_[a] * r.ra.cross(pp);
-    vp_[b] -= inv_mass_[b] * pp;
-    wp_[b] -= inv_inertia_[b] * r.rb.cross(pp);
+    if (inv_mass_[a] > 0.0) {
+      vp_[a] += inv_mass_[a] * pp;
+      wp_[a] += inv_inertia_[a] * r.ra.cross(pp);
+    }
+    if (inv_mass_[b] > 0.0) {
+      vp_[b] -= inv_mass_[b] * pp;
+      wp_[b] -= inv_inertia_[b] * r.rb.cross(pp);
+    }
   }
   // Scalar rows, unbounded.
-  for (AxisRow& r : axes_) {
+  for (const int index : island.axes) {
+    AxisRow& r = axes_[static_cast<size_t>(index)];
     const size_t a = static_cast<size_t>(r.a), b = static_cast<size_t>(r.b);
     const double jv = r.lin.dot(v_[a] - v_[b]) + r.ang_a.dot(w_[a]) - r.ang_b.dot(w_[b]);
     const double d = (r.target - jv) * r.mass;

@@ -5,6 +5,7 @@
 
 #include "asperity/world/world.hpp"
 #include "dynamics/texture_axis.hpp"
+#include "parallel/thread_pool.hpp"
 #include "solver/contact_solver.hpp"
 
 namespace asperity {
@@ -28,7 +29,12 @@ void setContactFrame(Contact& c, const Vec3& desired_t, const Vec3& fallback) {
 void World::computeFrames() {
   const Vec3& axis = settings_.world_axis;
   const Vec3& fallback = settings_.fallback_axis;
-  for (Contact& c : contacts_) {
+  // Each contact's frame alone, so threads may share the contacts; a user's frame callback
+  // is only ever called from this thread.
+  const bool user_code = settings_.frame_mode == FrameMode::Body && frame_callback_;
+  const size_t grain = user_code ? contacts_.size() : 64;
+  pool_->forEach(contacts_.size(), grain, [&](size_t i) {
+    Contact& c = contacts_[i];
     Vec3 desired = axis;
     switch (settings_.frame_mode) {
       case FrameMode::World:
@@ -55,7 +61,7 @@ void World::computeFrames() {
       }
     }
     setContactFrame(c, desired, fallback);
-  }
+  });
   if (settings_.frame_mode == FrameMode::Auto) alignFramesWithSliding();
 }
 

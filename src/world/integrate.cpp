@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "asperity/world/world.hpp"
+#include "parallel/thread_pool.hpp"
 #include "solver/contact_solver.hpp"
 
 namespace asperity {
@@ -21,9 +22,10 @@ Quat rotate(const Quat& q, const Vec3& w, double dt) {
 void World::integrate() {
   // One sub-step's time (the whole step without sub-steps).
   const double dt = substepDt();
-  for (size_t i = 0; i < bodies_.size(); ++i) {
+  // Each body moves alone: any split over threads gives the same poses.
+  pool_->forEach(bodies_.size(), 256, [&](size_t i) {
     Body& b = bodies_[i];
-    if (b.type == BodyType::Static) continue;
+    if (b.type == BodyType::Static) return;
     // Dynamic bodies also move by the split-impulse pseudo-velocities (then forgotten).
     Vec3 v = b.linear_velocity;
     Vec3 w = b.angular_velocity;
@@ -33,7 +35,7 @@ void World::integrate() {
     }
     b.pose.position += dt * v;
     b.pose.rotation = rotate(b.pose.rotation, w, dt);
-  }
+  });
 }
 
 }  // namespace asperity

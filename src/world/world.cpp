@@ -12,6 +12,7 @@
 #include "asperity/sampler/cone_provider.hpp"
 #include "asperity/world/state_check.hpp"
 #include "collision/collision_detector.hpp"
+#include "parallel/thread_pool.hpp"
 #include "solver/contact_solver.hpp"
 
 namespace asperity {
@@ -38,9 +39,21 @@ World::World(WorldSettings settings)
 
 World::~World() = default;
 
+const ThreadPool& World::threadPool() {
+  // Made again only when the setting changes (a pool starts its threads once).
+  if (!pool_ || pool_->requested() != settings_.threads) {
+    if (settings_.threads < 0 || settings_.threads > kMaxThreads)
+      throw Error("world settings: threads must be in 0.." + std::to_string(kMaxThreads) +
+                  " (0 = every core), got " + std::to_string(settings_.threads));
+    pool_ = std::make_unique<ThreadPool>(settings_.threads);
+  }
+  return *pool_;
+}
+
 void World::step() {
   if (!(settings_.dt > 0.0)) throw Error("world settings: dt must be > 0");
   if (settings_.iterations < 1) throw Error("world settings: iterations must be >= 1");
+  provider_->setThreadPool(&threadPool());
   StepProfile p;
   const Clock::time_point begin = Clock::now();
   Clock::time_point clock = begin;

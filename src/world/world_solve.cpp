@@ -4,6 +4,7 @@
 #include "asperity/error.hpp"
 #include "asperity/world/world.hpp"
 #include "collision/collision_detector.hpp"
+#include "parallel/thread_pool.hpp"
 #include "solver/contact_solver.hpp"
 
 namespace asperity {
@@ -105,7 +106,7 @@ void World::solveOnce(double t, double h) {
   solver_->begin(bodies_, solverSettings());
   solver_->setJoints(solverJoints(t, h));
   solver_->setContacts(contacts_, true);
-  solver_->iterate(settings_.iterations);
+  solver_->iterate(settings_.iterations, pool_.get());
   solver_->finish(bodies_, contacts_);
 }
 

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "asperity/sampler/friction_provider.hpp"
 #include "asperity/sampler/patch_sampler.hpp"
@@ -29,6 +30,9 @@ class CpuPatchSampler : public FrictionProvider {
   // or shape that does not exist, or a surface with a bad texture_size.
   void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                            const FrictionSettings& settings) override;
+  // Contacts are sampled in parallel on `pool`, each with its own thread's scratch.
+  void setThreadPool(const ThreadPool* pool) override { pool_ = pool; }
+  // Patch and averaging times summed over the threads (CPU time, not wall time).
   double lastPatchTimeMs() const override { return patch_ms_; }
   double lastAveragingTimeMs() const override { return averaging_ms_; }
 
@@ -38,7 +42,9 @@ class CpuPatchSampler : public FrictionProvider {
 
  private:
   struct State;
-  std::unique_ptr<State> state_;
+  std::unique_ptr<State> state_;                       // the calling thread's scratch
+  std::vector<std::unique_ptr<State>> worker_states_;  // one per pool thread
+  const ThreadPool* pool_ = nullptr;
   double patch_ms_ = 0.0;
   double averaging_ms_ = 0.0;
 };

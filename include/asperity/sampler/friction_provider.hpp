@@ -25,9 +25,14 @@ struct FrictionSettings {
   int patch_resolution = 16;  // R (pixels per side)
 };
 
+class ThreadPool;  // the world's worker threads (internal)
+
 class FrictionProvider {
  public:
   virtual ~FrictionProvider() = default;
+  // The world's worker threads for the next calls (null: the calling thread only). A provider
+  // may spread its contacts over them; its results must not depend on how many there are.
+  virtual void setThreadPool(const ThreadPool* pool) { (void)pool; }
   virtual std::string name() const = 0;
   // Fills mu (count = settings.directions), covered_pixels and fallback of every contact.
   // Contacts already carry their frame (t, b). Body A of a contact is bodies[c.body_a].

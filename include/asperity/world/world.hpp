@@ -26,6 +26,7 @@ namespace asperity {
 // Internals of the step (src/): the world owns them but a user never touches them.
 class CollisionDetector;
 class ContactSolver;
+class ThreadPool;
 struct SolverJoint;
 struct SolverSettings;
 
@@ -36,6 +37,9 @@ enum class FrameMode {
   Auto,    // along the relative sliding velocity after a few frictionless iterations
   Texture  // along the +u direction of B's texture (planes and boxes), else World
 };
+
+// Most worker threads a world may ask for (WorldSettings::threads).
+inline constexpr int kMaxThreads = 1024;
 
 struct WorldSettings {
   double dt = 0.01;     // s
@@ -59,6 +63,10 @@ struct WorldSettings {
   // m/s; World::step throws StepError when a dynamic body is faster (0 = no limit). Far above
   // anything the scenes do, it catches explosions before they turn into NaN.
   double max_speed = 1000.0;
+  // Worker threads of a step (oneTBB): 0 = every core, 1 = the calling thread only. Narrow
+  // phase, frames, friction sampling, the solver's independent islands and integration are
+  // split over them; the state after every step is the same bits whatever the count (SPEC 9).
+  int threads = 1;
 };
 
 // Wall-clock time of each stage of the last step (ms), and what it saw.
@@ -154,6 +162,7 @@ class World {
   void solveSubsteps();
   void moveContacts(std::span<const Contact> base, std::span<const Transform> start);
   double automaticSlop() const;
+  const ThreadPool& threadPool();
 
   WorldSettings settings_;
   std::vector<Body> bodies_;
@@ -166,6 +175,7 @@ class World {
   std::unique_ptr<CollisionDetector> collision_;
   std::unique_ptr<ContactSolver> solver_;
   std::unique_ptr<FrictionProvider> provider_;
+  std::unique_ptr<ThreadPool> pool_;  // for settings_.threads, made by the first step
   FrameCallback frame_callback_;
   StepProfile profile_;
   bool bodies_changed_ = true;
