@@ -23,6 +23,7 @@ struct BenchOptions {
   std::string scenes_dir = "scenes";
   std::string sampler;
   std::string json;
+  int threads = 1;  // > 1: each scene also runs on this many threads, side by side
 };
 
 // "ours (paper)" for one column, or just ours when the paper has no such row.
@@ -58,16 +59,60 @@ void printTable(const std::vector<TableRow>& rows) {
       "gains of the moving and the fixed bodies' surfaces; timings on this machine)\n");
 }
 
+std::string hex(uint64_t hash) {
+  char text[17];
+  std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(hash));
+  return text;
+}
+
+// Per stage, the mean step time on 1 thread and on N, their ratio, and both state hashes
+// (equal: the thread count never changes the results).
+void printThreadTable(const std::vector<TableRow>& one, const std::vector<TableRow>& many,
+                      int threads) {
+  std::printf("\nper-stage ms per step on 1 thread / on %d threads (speed-up)\n", threads);
+  std::printf("%-28s", "scene");
+  for (int i = 0; i < kStageCount; ++i) std::printf(" %-22s", stageName(static_cast<Stage>(i)));
+  std::printf(" %-22s %s\n", "total", "state hash (1 / N)");
+  for (size_t k = 0; k < one.size(); ++k) {
+    const experiments::RunProfile& a = one[k].ours;
+    const experiments::RunProfile& b = many[k].ours;
+    auto cell = [](double x, double y) {
+      char text[64];
+      std::snprintf(text, sizeof(text), "%.3f/%.3f (%.2fx)", x, y, y > 0.0 ? x / y : 0.0);
+      return std::string(text);
+    };
+    std::printf("%-28s", a.scene.c_str());
+    for (int i = 0; i < kStageCount; ++i) {
+      const auto stage = static_cast<Stage>(i);
+      std::printf(" %-22s", cell(a.sums.meanMs(stage), b.sums.meanMs(stage)).c_str());
+    }
+    std::printf(" %-22s %s %s %s\n", cell(a.total_ms, b.total_ms).c_str(),
+                hex(a.state_hash).c_str(),
+                a.state_hash == b.state_hash ? "==" : "!=", hex(b.state_hash).c_str());
+  }
+}
+
 nlohmann::ordered_json rowJson(const TableRow& r) {
   const auto& o = r.ours;
   nlohmann::ordered_json j;
   j["title"] = r.title;
   j["scene"] = o.scene;
-  j["ours"] = {{"k_a", o.k_a},           {"k_b", o.k_b},           {"mu0", o.mu0},
-               {"w", o.patch_width},     {"dt_ms", o.dt * 1e3},    {"sampler", o.sampler},
-               {"steps", o.steps},       {"contacts", o.contacts}, {"fallbacks", o.fallbacks},
-               {"total_ms", o.total_ms}, {"patch_ms", o.patch_ms}, {"averaging_ms", o.averaging_ms},
-               {"solve_ms", o.solve_ms}, {"wall_s", o.wall_s}};
+  j["ours"] = {{"k_a", o.k_a},
+               {"k_b", o.k_b},
+               {"mu0", o.mu0},
+               {"w", o.patch_width},
+               {"dt_ms", o.dt * 1e3},
+               {"sampler", o.sampler},
+               {"steps", o.steps},
+               {"contacts", o.contacts},
+               {"fallbacks", o.fallbacks},
+               {"total_ms", o.total_ms},
+               {"patch_ms", o.patch_ms},
+               {"averaging_ms", o.averaging_ms},
+               {"solve_ms", o.solve_ms},
+               {"wall_s", o.wall_s},
+               {"threads", o.threads},
+               {"state_hash", hex(o.state_hash)}};
   if (r.paper) {
     const auto& p = *r.paper;
     j["paper"] = {{"k_a", p.k_a},
@@ -90,10 +135,15 @@ void runBench(const BenchOptions& opt) {
   const std::vector<std::string> scenes =
       opt.scenes.empty() ? experiments::catalogScenePaths(opt.scenes_dir) : opt.scenes;
   // One row per scene, printed as a table and optionally written as JSON.
-  std::vector<TableRow> rows;
-  for (const std::string& path : scenes)
-    rows.push_back(experiments::benchScene(path, opt.sampler, providers));
+  std::vector<TableRow> rows, threaded;
+  for (const std::string& path : scenes) {
+    rows.push_back(experiments::benchScene(path, opt.sampler, providers, 1));
+    if (opt.threads != 1)
+      threaded.push_back(experiments::benchScene(path, opt.sampler, providers, opt.threads));
+  }
   printTable(rows);
+  if (opt.threads != 1) printThreadTable(rows, threaded, opt.threads);
+  for (const TableRow& r : threaded) rows.push_back(r);
   if (opt.json.empty()) return;
   nlohmann::ordered_json j = nlohmann::ordered_json::array();
   for (const TableRow& r : rows) j.push_back(rowJson(r));
@@ -114,6 +164,10 @@ void registerBenchCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--sampler", opt->sampler, "Friction sampler override (constant, cone, cpu...)");
   sub->add_option("--json", opt->json, "Also write the table as JSON to this file");
+  sub->add_option("--threads", opt->threads,
+                  "Also run each scene on N threads (0 = every core): per-stage times at 1 and N "
+                  "and both state hashes")
+      ->check(CLI::Range(0, kMaxThreads));
   sub->callback([opt] { runBench(*opt); });
 }
 

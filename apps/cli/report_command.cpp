@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@ struct ReportOptions {
   std::string out;
   std::string scenes_dir = "scenes";
   std::string sampler;
+  std::optional<int> threads;  // worker threads of each step (the scenes' when unset)
   std::vector<std::string> only;
   bool frames = true;  // when built with the renderer
 };
@@ -167,6 +169,7 @@ void writeReport(const ReportOptions& opt) {
   experiments::RunOptions run;
   run.scenes_dir = opt.scenes_dir;
   run.sampler = opt.sampler;
+  run.threads = opt.threads;
   run.providers = providers;
   run.record_every = 2;
   std::vector<Outcome> outcomes;
@@ -218,6 +221,9 @@ void registerReportCommand(CLI::App& app) {
   sub->add_option("--scenes", opt->scenes_dir, "Folder of the experiment scenes")
       ->capture_default_str();
   sub->add_option("--sampler", opt->sampler, "Friction sampler override (constant, cone, cpu...)");
+  sub->add_option("--threads", opt->threads,
+                  "Worker threads of each step (0 = every core); the outcomes do not change")
+      ->check(CLI::Range(0, kMaxThreads));
   sub->add_option("--only", opt->only, "Only these experiment ids");
   sub->add_flag("--frames,!--no-frames", opt->frames,
                 "One rendered frame per experiment (default, when built with the renderer)");

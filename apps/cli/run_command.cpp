@@ -86,32 +86,8 @@ void appendRows(std::string& text, const World& world, int64_t step) {
   }
 }
 
-// Sums of StepProfile fields over the run, for --stats. Contact counts are summed in doubles:
-// an int sum overflows after a million steps of a few thousand contacts.
-struct ProfileSums {
-  StepProfile sum;  // stage times only; its contacts and fallbacks stay 0
-  double contacts = 0.0, fallbacks = 0.0;
-  int max_contacts = 0;
-  void add(const StepProfile& p) {
-    sum.drivers_ms += p.drivers_ms;
-    sum.collide_ms += p.collide_ms;
-    sum.frames_ms += p.frames_ms;
-    sum.friction_ms += p.friction_ms;
-    sum.patch_ms += p.patch_ms;
-    sum.averaging_ms += p.averaging_ms;
-    sum.solve_ms += p.solve_ms;
-    sum.integrate_ms += p.integrate_ms;
-    sum.total_ms += p.total_ms;
-    contacts += p.contacts;
-    fallbacks += p.fallbacks;
-    max_contacts = std::max(max_contacts, p.contacts);
-  }
-};
-
 nlohmann::ordered_json statsJson(const RunOptions& opt, const SceneDesc& scene, const World& world,
                                  const ProfileSums& sums, int64_t steps, double wall_s) {
-  const double n = steps > 0 ? static_cast<double>(steps) : 1.0;
-  const StepProfile& s = sums.sum;
   nlohmann::ordered_json j;
   j["scene"] = opt.scene;
   j["steps"] = steps;
@@ -120,13 +96,11 @@ nlohmann::ordered_json statsJson(const RunOptions& opt, const SceneDesc& scene, 
   j["wall_time_s"] = wall_s;
   j["bodies"] = world.bodies().size();
   j["sampler"] = scene.sampler;
+  j["threads"] = world.settings().threads;
   // Per-step averages (ms for the stages, as StepProfile).
-  j["per_step"] = {{"contacts", sums.contacts / n},  {"fallbacks", sums.fallbacks / n},
-                   {"drivers_ms", s.drivers_ms / n}, {"collide_ms", s.collide_ms / n},
-                   {"frames_ms", s.frames_ms / n},   {"friction_ms", s.friction_ms / n},
-                   {"patch_ms", s.patch_ms / n},     {"averaging_ms", s.averaging_ms / n},
-                   {"solve_ms", s.solve_ms / n},     {"integrate_ms", s.integrate_ms / n},
-                   {"total_ms", s.total_ms / n}};
+  nlohmann::ordered_json per_step;
+  for (const auto& [name, value] : sums.means()) per_step[name] = value;
+  j["per_step"] = per_step;
   j["max_contacts"] = sums.max_contacts;
   char hash[17];
   std::snprintf(hash, sizeof(hash), "%016llx", static_cast<unsigned long long>(world.stateHash()));
@@ -233,7 +207,7 @@ void runScene(const RunOptions& opt) {
     std::printf("%s: %lld steps, %g s simulated, %zu bodies, %.3f s wall, %.3f ms/step\n",
                 opt.scene.c_str(), static_cast<long long>(steps), world->time(),
                 world->bodies().size(), wall_s,
-                steps > 0 ? sums.sum.total_ms / static_cast<double>(steps) : 0.0);
+                steps > 0 ? sums.total_ms / static_cast<double>(steps) : 0.0);
   }
 }
 

@@ -145,17 +145,16 @@ void Viewer::profilePanel() {
   const StepProfile& p = world_->profile();
   ImGui::Text("%.1f fps   render %.1f ms   step %.2f ms", fps_, render_ms_, step_ms_);
   ImGui::Text("contacts %d   fallbacks %d", p.contacts, p.fallbacks);
-  // Per-stage times of the last step (ms), in step order.
-  const std::array<std::pair<const char*, double>, 9> stages = {{{"drivers", p.drivers_ms},
-                                                                 {"collide", p.collide_ms},
-                                                                 {"frames", p.frames_ms},
-                                                                 {"friction", p.friction_ms},
-                                                                 {"  patch", p.patch_ms},
-                                                                 {"  averaging", p.averaging_ms},
-                                                                 {"solve", p.solve_ms},
-                                                                 {"integrate", p.integrate_ms},
-                                                                 {"total", p.total_ms}}};
-  for (const auto& [name, ms] : stages) ImGui::Text("%-12s %8.3f ms", name, ms);
+  // Per-stage times of the last step (ms), in step order, the provider's share under friction.
+  for (int i = 0; i < kStageCount; ++i) {
+    const auto stage = static_cast<Stage>(i);
+    ImGui::Text("%-12s %8.3f ms", stageName(stage), p.ms(stage));
+    if (stage == Stage::Friction) {
+      ImGui::Text("%-12s %8.3f ms", "  patch", p.patch_ms);
+      ImGui::Text("%-12s %8.3f ms", "  averaging", p.averaging_ms);
+    }
+  }
+  ImGui::Text("%-12s %8.3f ms", "total", p.total_ms);
 }
 
 }  // namespace asperity::viewer

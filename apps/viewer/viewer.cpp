@@ -93,6 +93,7 @@ void Viewer::loadScene(const std::string& path) {
   try {
     SceneDesc scene = asperity::loadScene(path);
     if (!options_.sampler.empty()) scene.sampler = options_.sampler;
+    if (options_.threads >= 0) scene.settings.threads = options_.threads;
     std::unique_ptr<World> world = instantiate(scene, {providers_});
     scene_ = std::move(scene);
     world_ = std::move(world);

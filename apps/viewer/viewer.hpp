@@ -21,6 +21,7 @@ namespace asperity::viewer {
 struct ViewerOptions {
   std::string scene;
   std::string sampler;  // replaces the scene's friction sampler when set
+  int threads = -1;     // worker threads of a step; < 0: the scene's
   int width = 1280;
   int height = 720;
   int samples = 0;         // MSAA; 0 = automatic: 4 on a GPU, 1 on a software rasteriser

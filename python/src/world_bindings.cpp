@@ -39,7 +39,8 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
                                    std::optional<std::string> friction,
                                    std::optional<std::string> frame, std::optional<int> directions,
                                    std::optional<double> patch_width,
-                                   std::optional<int> patch_resolution) {
+                                   std::optional<int> patch_resolution,
+                                   std::optional<int> threads) {
   // Scenes may ask for the core samplers and, when built with OpenGL, "gl".
   InstantiateOptions options;
 #ifdef ASPERITY_HAVE_RENDER
@@ -66,6 +67,10 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
     throwValue("patch_width: must be a finite number > 0 (m)");
   if (patch_resolution && (*patch_resolution < 1 || *patch_resolution > 4096))
     throwValue("patch_resolution: must be in 1..4096");
+  if (threads && (*threads < 0 || *threads > kMaxThreads))
+    throwValue("threads: must be in 0.." + std::to_string(kMaxThreads) + " (0 = every core), got " +
+               std::to_string(*threads));
+  if (threads) s.threads = *threads;
   if (directions) s.friction.directions = *directions;
   if (patch_width) s.friction.patch_width = *patch_width;
   if (patch_resolution) s.friction.patch_resolution = *patch_resolution;
@@ -167,13 +172,14 @@ void bindWorld(py::module_& m) {
                             "asperity.Scene).\n\nKeyword overrides match `asperity run`: sampler "
                             "(constant, cone, cpu, gl), friction (coulomb, box, polygon), frame "
                             "(world, body, auto, texture), directions N, patch_width w (m), "
-                            "patch_resolution R. Steps run on the calling thread.");
+                            "patch_resolution R, threads (worker threads of a step, 0 = every "
+                            "core; the results are the same bits for any count).");
   // Construction, stepping and the state arrays.
   world
       .def(py::init(&makeWorld), py::arg("scene"), py::kw_only(), py::arg("sampler") = py::none(),
            py::arg("friction") = py::none(), py::arg("frame") = py::none(),
            py::arg("directions") = py::none(), py::arg("patch_width") = py::none(),
-           py::arg("patch_resolution") = py::none())
+           py::arg("patch_resolution") = py::none(), py::arg("threads") = py::none())
       .def(
           "step",
           [](PyWorld& w, int64_t n) {

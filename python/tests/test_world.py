@@ -21,6 +21,17 @@ def test_hash_equals_the_cli_for_every_experiment_scene(name):
     assert len(world.state_hash()) == 16
 
 
+def test_threads_do_not_change_the_bits():
+    hashes = set()
+    for threads in (1, 2, 4):
+        world = asperity.World(str(SCENES / "stacking.json"), sampler="cpu", threads=threads)
+        world.step(30)
+        hashes.add(world.state_hash())
+    assert len(hashes) == 1
+    with pytest.raises(ValueError, match="threads"):
+        asperity.World(str(SCENES / "stacking.json"), threads=-1)
+
+
 def test_state_arrays_have_the_documented_shapes_and_dtypes():
     world = asperity.World(str(SCENES / "stacking.json"))
     b = len(world.body_names)

@@ -28,24 +28,17 @@ const std::vector<Transform>& Recording::of(const std::string& name) const {
 namespace {
 
 // Sums of the profile fields that Table 1 reports.
-void accumulate(RunProfile& p, const StepProfile& s) {
-  p.contacts += s.contacts;
-  p.fallbacks += s.fallbacks;
-  p.total_ms += s.total_ms;
-  p.patch_ms += s.patch_ms;
-  p.averaging_ms += s.averaging_ms;
-  p.solve_ms += s.solve_ms;
-}
-
-// Sums -> per-step averages.
-void average(RunProfile& p) {
-  const double n = p.steps > 0 ? static_cast<double>(p.steps) : 1.0;
-  p.contacts /= n;
-  p.fallbacks /= n;
-  p.total_ms /= n;
-  p.patch_ms /= n;
-  p.averaging_ms /= n;
-  p.solve_ms /= n;
+// Per-step means from the run's sums, and the state it ended in.
+void finishProfile(RunProfile& p, const World& world) {
+  const ProfileSums& s = p.sums;
+  const double n = static_cast<double>(std::max<int64_t>(s.steps, 1));
+  p.contacts = s.contacts / n;
+  p.fallbacks = s.fallbacks / n;
+  p.total_ms = s.total_ms / n;
+  p.patch_ms = s.patch_ms / n;
+  p.averaging_ms = s.averaging_ms / n;
+  p.solve_ms = s.meanMs(Stage::Solve);
+  p.state_hash = world.stateHash();
 }
 
 int64_t stepsFor(double seconds, double dt) {
@@ -67,6 +60,7 @@ RunProfile startProfile(const std::string& file, const SceneDesc& scene, double 
       k = std::max(k, shape.surface.gain);
     }
   p.steps = stepsFor(seconds, scene.settings.dt);
+  p.threads = scene.settings.threads;
   return p;
 }
 
@@ -81,6 +75,7 @@ Recording simulate(const std::string& file, double seconds, const RunOptions& op
   const std::string path = (std::filesystem::path(options.scenes_dir) / file).string();
   SceneDesc scene = loadScene(path);
   if (!options.sampler.empty()) scene.sampler = options.sampler;
+  if (options.threads) scene.settings.threads = *options.threads;
   if (frame) scene.settings.frame_mode = *frame;
   Recording rec;
   rec.world = instantiate(scene, InstantiateOptions{options.providers});
@@ -107,27 +102,28 @@ Recording simulate(const std::string& file, double seconds, const RunOptions& op
   const auto start = std::chrono::steady_clock::now();
   for (int64_t i = 1; i <= rec.profile.steps; ++i) {
     rec.world->step();
-    accumulate(rec.profile, rec.world->profile());
+    rec.profile.sums.add(rec.world->profile());
     if (i % every == 0 || i == rec.profile.steps) record();
   }
   rec.profile.wall_s = secondsSince(start);
-  average(rec.profile);
+  finishProfile(rec.profile, *rec.world);
   return rec;
 }
 
 RunProfile profileScene(const std::string& path, double seconds, const std::string& sampler,
-                        const FrictionProviders& providers) {
+                        const FrictionProviders& providers, std::optional<int> threads) {
   SceneDesc scene = loadScene(path);
   if (!sampler.empty()) scene.sampler = sampler;
+  if (threads) scene.settings.threads = *threads;
   std::unique_ptr<World> world = instantiate(scene, InstantiateOptions{providers});
   RunProfile p = startProfile(path, scene, seconds);
   const auto start = std::chrono::steady_clock::now();
   for (int64_t i = 0; i < p.steps; ++i) {
     world->step();
-    accumulate(p, world->profile());
+    p.sums.add(world->profile());
   }
   p.wall_s = secondsSince(start);
-  average(p);
+  finishProfile(p, *world);
   return p;
 }
 
@@ -154,7 +150,7 @@ std::vector<std::string> catalogScenePaths(const std::string& scenes_dir) {
 }
 
 TableRow benchScene(const std::string& path, const std::string& sampler,
-                    const FrictionProviders& providers) {
+                    const FrictionProviders& providers, std::optional<int> threads) {
   // The experiment that owns this file name gives the duration, title and paper row.
   const std::string file = std::filesystem::path(path).filename().string();
   TableRow row;
@@ -167,7 +163,7 @@ TableRow benchScene(const std::string& path, const std::string& sampler,
         row.paper = run.paper;
         seconds = run.seconds;
       }
-  row.ours = profileScene(path, seconds, sampler, providers);
+  row.ours = profileScene(path, seconds, sampler, providers, threads);
   return row;
 }
 

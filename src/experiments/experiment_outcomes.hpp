@@ -41,6 +41,8 @@ struct RunProfile {
   double patch_width = 0.0;  // m
   double k_a = 0.0;          // largest gain on a dynamic body's surface
   double k_b = 0.0;          // largest gain on a static or kinematic body's surface
+  int threads = 1;
+  // Per-step means of the stages (ProfileSums), set when the run ends.
   double contacts = 0.0;
   double fallbacks = 0.0;
   double total_ms = 0.0;
@@ -48,6 +50,8 @@ struct RunProfile {
   double averaging_ms = 0.0;
   double solve_ms = 0.0;
   double wall_s = 0.0;
+  ProfileSums sums;
+  uint64_t state_hash = 0;  // of the world at the end of the run
 };
 
 // A curve of a plot: y over x (time, usually).
@@ -85,6 +89,7 @@ struct Outcome {
 struct RunOptions {
   std::string scenes_dir = "scenes";  // folder holding the experiments' scene files
   std::string sampler;                // friction sampler override ("" = the scenes')
+  std::optional<int> threads;         // worker threads override (WorldSettings::threads)
   int record_every = 1;               // steps between recorded samples of the plots
   // The samplers the scenes and `sampler` may name (a front end adds "gl" when it has it).
   FrictionProviders providers = FrictionProviders::builtIn();
@@ -133,8 +138,10 @@ Recording simulate(const std::string& file, double seconds, const RunOptions& op
                    std::optional<FrameMode> frame = std::nullopt);
 
 // Runs one scene for `seconds` (no recording) and returns its per-step profile.
+// `threads` overrides the scene's WorldSettings::threads.
 RunProfile profileScene(const std::string& path, double seconds, const std::string& sampler,
-                        const FrictionProviders& providers = FrictionProviders::builtIn());
+                        const FrictionProviders& providers = FrictionProviders::builtIn(),
+                        std::optional<int> threads = std::nullopt);
 
 // One row of our Table 1: a scene's parameters and per-step timings beside the paper's.
 struct TableRow {
@@ -144,7 +151,8 @@ struct TableRow {
 };
 // Runs a scene file as Table 1 does: for its experiment's duration (1 s if it belongs to none).
 TableRow benchScene(const std::string& path, const std::string& sampler,
-                    const FrictionProviders& providers = FrictionProviders::builtIn());
+                    const FrictionProviders& providers = FrictionProviders::builtIn(),
+                    std::optional<int> threads = std::nullopt);
 // Every experiment scene of the catalog, from scenes_dir.
 std::vector<std::string> catalogScenePaths(const std::string& scenes_dir);
 

@@ -59,24 +59,24 @@ void World::step() {
   Clock::time_point clock = begin;
   // 1. Gravity, springs and loads change the velocities (first half of semi-implicit Euler).
   applyDrivers();
-  p.drivers_ms = lap(clock);
+  p.ms(Stage::Drivers) = lap(clock);
   // 2. Contacts from the current poses (normal B -> A, phi, witness points, keys).
   collide();
-  p.collide_ms = lap(clock);
+  p.ms(Stage::Collide) = lap(clock);
   // 3. Each contact's tangent frame (t, b) by the frame mode (SPEC 5).
   computeFrames();
-  p.frames_ms = lap(clock);
+  p.ms(Stage::Frames) = lap(clock);
   // 4. Per-direction friction coefficients of every contact (SPEC 3, Eq. 7).
   computeFriction();
-  p.friction_ms = lap(clock);
+  p.ms(Stage::Friction) = lap(clock);
   p.patch_ms = provider_->lastPatchTimeMs();
   p.averaging_ms = provider_->lastAveragingTimeMs();
   // 5. PGS on velocities: joints, contacts with limit-surface friction, split impulses.
   solve();
-  p.solve_ms = lap(clock);
+  p.ms(Stage::Solve) = lap(clock);
   // 6. Positions and orientations from the new velocities (plus position corrections).
   integrate();
-  p.integrate_ms = lap(clock);
+  p.ms(Stage::Integrate) = lap(clock);
   // 7. The clock.
   time_ += settings_.dt;
   ++steps_;

@@ -144,6 +144,14 @@ TEST(RunCommand, PatchSettingsOverrideTheScene) {
   EXPECT_NE(overridden, run({"run", base}));
 }
 
+// --threads spreads a step over worker threads without changing a bit.
+TEST(RunCommand, ThreadsDoNotChangeTheHash) {
+  const std::string scene = test::sourcePath("scenes/stacking.json");
+  const std::string one = hashOf({"run", scene, "--steps", "40", "--threads", "1", "--hash"});
+  EXPECT_EQ(hashOf({"run", scene, "--steps", "40", "--threads", "2", "--hash"}), one);
+  EXPECT_EQ(hashOf({"run", scene, "--steps", "40", "--threads", "0", "--hash"}), one);
+}
+
 TEST(RunCommand, BadValuesAreOneLineErrors) {
   const std::string scene = example("minimal.json");
   expectOneLineError(runCli({"run", scene, "--friction", "cone"}), "--friction");
@@ -158,6 +166,7 @@ TEST(RunCommand, BadValuesAreOneLineErrors) {
   expectOneLineError(runCli({"run", scene, "--patch-width", "0"}), "--patch-width");
   expectOneLineError(runCli({"run", scene, "--patch-width", "nan"}), "--patch-width");
   expectOneLineError(runCli({"run", scene, "--patch-res", "0"}), "--patch-res");
+  expectOneLineError(runCli({"run", scene, "--threads", "-1"}), "--threads");
   expectOneLineError(runCli({"run", scene, "--steps", "1", "--out", "/nonexistent/dir/t.csv"}),
                      "--out");
   expectOneLineError(runCli({"run"}), "SCENE");

@@ -222,7 +222,39 @@ TEST(World, ProfileCountsContactsAndStages) {
   EXPECT_EQ(p.contacts, static_cast<int>(world.contacts().size()));
   EXPECT_GE(p.contacts, 4);
   EXPECT_EQ(p.fallbacks, 0);
-  EXPECT_GE(p.total_ms, p.solve_ms);
+  // Every stage was timed, and the stages add up to at most the whole step.
+  double stages = 0.0;
+  for (int i = 0; i < kStageCount; ++i) {
+    EXPECT_GE(p.ms(static_cast<Stage>(i)), 0.0) << stageName(static_cast<Stage>(i));
+    stages += p.ms(static_cast<Stage>(i));
+  }
+  EXPECT_GT(p.ms(Stage::Solve), 0.0);
+  EXPECT_LE(stages, p.total_ms * (1 + 1e-9));
+}
+
+// One ProfileSums for every front end: sums, means and the --stats names in step order.
+TEST(World, ProfileSumsAverageStepsInStageOrder) {
+  ProfileSums sums;
+  StepProfile a, b;
+  a.ms(Stage::Collide) = 1.0;
+  b.ms(Stage::Collide) = 3.0;
+  a.contacts = 10;
+  b.contacts = 20;
+  a.total_ms = b.total_ms = 5.0;
+  sums.add(a);
+  sums.add(b);
+  EXPECT_EQ(sums.steps, 2);
+  EXPECT_DOUBLE_EQ(sums.meanMs(Stage::Collide), 2.0);
+  EXPECT_EQ(sums.max_contacts, 20);
+  const auto means = sums.means();
+  std::vector<std::string> names;
+  for (const auto& [name, value] : means) names.push_back(name);
+  EXPECT_EQ(names, (std::vector<std::string>{"contacts", "fallbacks", "drivers_ms", "collide_ms",
+                                             "frames_ms", "friction_ms", "patch_ms", "averaging_ms",
+                                             "solve_ms", "integrate_ms", "total_ms"}));
+  EXPECT_DOUBLE_EQ(means[0].second, 15.0);
+  EXPECT_DOUBLE_EQ(means[3].second, 2.0);
+  EXPECT_DOUBLE_EQ(means.back().second, 5.0);
 }
 
 }  // namespace

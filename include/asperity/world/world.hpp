@@ -6,12 +6,14 @@
 // z is up everywhere in Asperity.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "asperity/collision/contact.hpp"
@@ -69,19 +71,40 @@ struct WorldSettings {
   int threads = 1;
 };
 
+// The stages of a step, in the order World::step runs them (docs/step.md).
+enum class Stage { Drivers, Collide, Frames, Friction, Solve, Integrate };
+inline constexpr int kStageCount = 6;
+// "drivers", "collide", "frames", "friction", "solve", "integrate".
+const char* stageName(Stage stage);
+
 // Wall-clock time of each stage of the last step (ms), and what it saw.
 struct StepProfile {
-  double drivers_ms = 0.0;
-  double collide_ms = 0.0;
-  double frames_ms = 0.0;
-  double friction_ms = 0.0;   // whole friction stage (patch + averaging + rest)
-  double patch_ms = 0.0;      // provider's patch time (paper Table 1)
-  double averaging_ms = 0.0;  // provider's averaging time (paper Table 1)
-  double solve_ms = 0.0;
-  double integrate_ms = 0.0;
+  std::array<double, kStageCount> stage_ms{};  // indexed by Stage
+  double patch_ms = 0.0;      // provider's patch time, inside Friction (paper Table 1)
+  double averaging_ms = 0.0;  // provider's averaging time, inside Friction (paper Table 1)
   double total_ms = 0.0;
   int contacts = 0;
   int fallbacks = 0;  // contacts whose patch was empty (mu = mu0)
+
+  double& ms(Stage stage) { return stage_ms[static_cast<size_t>(stage)]; }
+  double ms(Stage stage) const { return stage_ms[static_cast<size_t>(stage)]; }
+};
+
+// StepProfiles summed over a run, for every front end that reports per-step means (run
+// --stats, bench, the experiments, the viewer, Python). Counts are summed in doubles: an int
+// sum overflows after a million steps of a few thousand contacts.
+struct ProfileSums {
+  int64_t steps = 0;
+  std::array<double, kStageCount> stage_ms{};
+  double patch_ms = 0.0, averaging_ms = 0.0, total_ms = 0.0;
+  double contacts = 0.0, fallbacks = 0.0;
+  int max_contacts = 0;
+
+  void add(const StepProfile& step);
+  // Per-step means, named as `asperity run --stats` writes them: contacts, fallbacks, then
+  // <stage>_ms in step order with patch_ms and averaging_ms after friction_ms, then total_ms.
+  std::vector<std::pair<std::string, double>> means() const;
+  double meanMs(Stage stage) const;
 };
 
 class World {
