@@ -1,0 +1,109 @@
+// The 1000-cube pile of ../shared/peers (scene B: a 10 x 10 x 10 grid of 0.2 m, 1 kg cubes,
+// 0.05 m gaps, the lowest layer 0.05 m above the ground, dropped; dt = 10 ms, 20 iterations,
+// Coulomb mu = 0.5) on 1 and on N worker threads. Steps 0..299 let it fall and settle
+// untimed; steps 300..499 are timed, as `bench_bullet pile` times them. Counters: the median
+// and mean step time (ms), each stage's mean (ms), the columns whose top cube is still on top (of
+// 100), and the label carries the state hash, which must be the same for every thread count.
+//   build/bin/asperity_pile_threads_bench   (Bullet beside it: bench_bullet pile tuned)
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "asperity/sampler/constant_provider.hpp"
+#include "asperity/world/builders.hpp"
+#include "asperity/world/world.hpp"
+
+namespace {
+
+using namespace asperity;
+using Clock = std::chrono::steady_clock;
+
+constexpr int kGrid = 10, kSettle = 300, kTimed = 200;
+constexpr double kEdge = 0.2, kGap = 0.05;
+
+std::vector<Vec3> gridCentres() {
+  std::vector<Vec3> centres;
+  const double pitch = kEdge + kGap, off = 0.5 * (kGrid - 1) * pitch;
+  for (int k = 0; k < kGrid; ++k)
+    for (int j = 0; j < kGrid; ++j)
+      for (int i = 0; i < kGrid; ++i)
+        centres.emplace_back(i * pitch - off, j * pitch - off, kGap + 0.5 * kEdge + k * pitch);
+  return centres;
+}
+
+std::unique_ptr<World> pileWorld(int threads) {
+  WorldSettings settings;
+  settings.limit_surface = LimitSurfaceKind::Coulomb;
+  settings.friction.mu0 = 0.5;
+  settings.threads = threads;
+  auto world = std::make_unique<World>(settings);
+  world->setFrictionProvider(std::make_unique<ConstantProvider>());
+  world->createBody(groundPlaneDesc());
+  const double density = 1.0 / (kEdge * kEdge * kEdge);  // 1 kg cubes
+  int index = 0;
+  for (const Vec3& c : gridCentres())
+    world->createBody(boxDesc("cube" + std::to_string(index++), Vec3::Constant(0.5 * kEdge),
+                              {c, Quat::Identity()}, density));
+  return world;
+}
+
+// Columns whose top cube sits on top of its column (within 2 cm), as the peers count them.
+int intactColumns(const World& world, const std::vector<Vec3>& init) {
+  int intact = 0;
+  const size_t top0 = static_cast<size_t>((kGrid - 1) * kGrid * kGrid);
+  for (size_t i = top0; i < init.size(); ++i) {
+    const Vec3 p = world.body(static_cast<BodyId>(i + 1)).pose.position;
+    if (std::abs(p.x() - init[i].x()) < 0.02 && std::abs(p.y() - init[i].y()) < 0.02 &&
+        std::abs(p.z() - (0.5 * kEdge + (kGrid - 1) * kEdge)) < 0.02)
+      ++intact;
+  }
+  return intact;
+}
+
+void BM_Pile1000(benchmark::State& state) {
+  const int threads = static_cast<int>(state.range(0));
+  const std::vector<Vec3> init = gridCentres();
+  for (auto _ : state) {
+    auto world = pileWorld(threads);
+    for (int i = 0; i < kSettle; ++i) world->step();
+    std::vector<double> ms;
+    ProfileSums sums;
+    for (int i = 0; i < kTimed; ++i) {
+      const auto t0 = Clock::now();
+      world->step();
+      ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+      sums.add(world->profile());
+    }
+    for (int k = 0; k < kStageCount; ++k)
+      state.counters[stageName(static_cast<Stage>(k))] = sums.meanMs(static_cast<Stage>(k));
+    double sum = 0.0;
+    for (double m : ms) sum += m;
+    std::sort(ms.begin(), ms.end());
+    state.SetIterationTime(sum / 1e3);
+    state.counters["median_ms"] = ms[ms.size() / 2];
+    state.counters["mean_ms"] = sum / kTimed;
+    state.counters["intact_columns"] = intactColumns(*world, init);
+    state.counters["contacts"] = static_cast<double>(world->contacts().size());
+    char hash[17];
+    std::snprintf(hash, sizeof(hash), "%016llx",
+                  static_cast<unsigned long long>(world->stateHash()));
+    state.SetLabel(std::string("hash ") + hash);
+  }
+}
+BENCHMARK(BM_Pile1000)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(0)
+    ->UseManualTime()
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
