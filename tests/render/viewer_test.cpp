@@ -3,9 +3,12 @@
 #include <stb/stb_image.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "support/test_support.hpp"
@@ -56,6 +59,12 @@ TEST(Viewer, MissingSceneIsAOneLineError) {
                               "/asperity-viewer' /nonexistent.json --frames 1 >" + dir + "/out 2>" +
                               dir + "/err";
   EXPECT_NE(shell(command), 0);
+  // One line on stderr, naming the program and the missing file.
+  std::ifstream err(dir + "/err");
+  const std::string text((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(text.rfind("asperity-viewer: error: ", 0), 0u) << text;
+  EXPECT_NE(text.find("/nonexistent.json"), std::string::npos) << text;
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
 }
 
 }  // namespace

@@ -48,7 +48,12 @@ TEST(Drivers, OffCentreSpringTurnsTheBody) {
   world.addSpring(
       SpringDesc{"twist", cube, Vec3(0.1, 0, 0), Vec3(0.1, 0.1, 0), Vec3::Zero(), 100.0, 0.0});
   world.step();
-  EXPECT_GT(world.body(cube).angular_velocity.z(), 0.0);
+  // F = k (0, 0.1, 0) = (0, 10, 0) N at r = (0.1, 0, 0): torque (0, 0, 1) N m on an 8 kg cube
+  // of side 0.2 m (I = 8 * 0.08 / 12), so w_z = dt * 1 / I after one step, nothing else.
+  const double inertia = 8.0 * (0.04 + 0.04) / 12.0;
+  const Vec3 w = world.body(cube).angular_velocity;
+  EXPECT_TRUE(near(w.z(), world.settings().dt / inertia, 1e-12)) << w.z();
+  EXPECT_LT(std::abs(w.x()) + std::abs(w.y()), 1e-15);
 }
 
 TEST(Drivers, ForceActsOnlyWithinItsInterval) {
