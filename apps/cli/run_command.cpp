@@ -39,14 +39,13 @@ struct RunOptions {
   bool hash = false;
 };
 
-const std::map<std::string, LimitSurfaceKind> kFrictionNames = {
-    {"coulomb", LimitSurfaceKind::Coulomb},
-    {"box", LimitSurfaceKind::Box},
-    {"polygon", LimitSurfaceKind::Polygon}};
-const std::map<std::string, FrameMode> kFrameNames = {{"world", FrameMode::World},
-                                                      {"body", FrameMode::Body},
-                                                      {"auto", FrameMode::Auto},
-                                                      {"texture", FrameMode::Texture}};
+// The names an enumeration's table gives, for CLI11's check.
+template <typename E>
+std::vector<std::string> namesOf(EnumNames<E> names) {
+  std::vector<std::string> out;
+  for (const auto& [name, e] : names) out.emplace_back(name);
+  return out;
+}
 
 // Appends the shortest text that reads back to the same double.
 void appendNumber(std::string& line, double x) {
@@ -143,8 +142,11 @@ class Progress {
 // The scene with the command line's overrides applied.
 SceneDesc loadWithOverrides(const RunOptions& opt, const FrictionProviders& providers) {
   SceneDesc scene = loadScene(opt.scene);
-  if (!opt.friction.empty()) scene.settings.limit_surface = kFrictionNames.at(opt.friction);
-  if (!opt.frame.empty()) scene.settings.frame_mode = kFrameNames.at(opt.frame);
+  if (!opt.friction.empty())
+    scene.settings.limit_surface =
+        parseName<LimitSurfaceKind>(opt.friction, kLimitSurfaceNames, "--friction");
+  if (!opt.frame.empty())
+    scene.settings.frame_mode = parseName<FrameMode>(opt.frame, kFrameModeNames, "--frame");
   if (!opt.sampler.empty()) {
     checkSampler(providers, opt.sampler);
     scene.sampler = opt.sampler;
@@ -236,9 +238,9 @@ void registerRunCommand(CLI::App& app) {
 
   // Overrides of the scene's settings.
   sub->add_option("--friction", opt->friction, "Limit surface: coulomb, box or polygon")
-      ->check(CLI::IsMember({"coulomb", "box", "polygon"}));
+      ->check(CLI::IsMember(namesOf<LimitSurfaceKind>(kLimitSurfaceNames)));
   sub->add_option("--frame", opt->frame, "Contact frame: world, body, auto or texture")
-      ->check(CLI::IsMember({"world", "body", "auto", "texture"}));
+      ->check(CLI::IsMember(namesOf<FrameMode>(kFrameModeNames)));
   sub->add_option("--sampler", opt->sampler, "Friction sampler (constant, cone, cpu, ...)");
   sub->add_option("--directions", opt->directions, "Sample directions N (SPEC 1)")
       ->check(CLI::Range(kMinDirections, kMaxDirections));

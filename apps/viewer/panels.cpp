@@ -11,12 +11,13 @@
 namespace asperity::viewer {
 namespace {
 
-// A combo box over an enum whose values are 0..names.size()-1.
-template <typename Enum, size_t N>
-void enumCombo(const char* label, Enum& value, const std::array<const char*, N>& names) {
-  int index = static_cast<int>(value);
-  if (ImGui::Combo(label, &index, names.data(), static_cast<int>(N)))
-    value = static_cast<Enum>(index);
+// A combo box over an enumeration's name table (the names scenes use).
+template <typename Enum>
+void enumCombo(const char* label, Enum& value, EnumNames<Enum> names) {
+  if (!ImGui::BeginCombo(label, nameOf(value, names))) return;
+  for (const auto& [name, e] : names)
+    if (ImGui::Selectable(name, e == value)) value = e;
+  ImGui::EndCombo();
 }
 
 bool inputDouble(const char* label, double& value, double lo, double hi, const char* format) {
@@ -89,10 +90,8 @@ void Viewer::settingsPanel() {
   ImGui::SliderInt("N (directions)", &f.directions, kMinDirections, 32);
   ImGui::SliderFloat("mu_max", &f.mu_max, 0.5f, 8.0f, "%.2f");
   // Limit surface and frame (SPEC 4, 5).
-  enumCombo("limit surface", s.limit_surface,
-            std::array<const char*, 3>{"coulomb", "box", "polygon"});
-  enumCombo("frame mode", s.frame_mode,
-            std::array<const char*, 4>{"world", "body", "auto", "texture"});
+  enumCombo("limit surface", s.limit_surface, kLimitSurfaceNames);
+  enumCombo("frame mode", s.frame_mode, kFrameModeNames);
   ImGui::SliderInt("iterations", &s.iterations, 1, 200);
   // The friction provider.
   const std::string current = world_->frictionProvider().name();

@@ -15,23 +15,14 @@
 namespace asperity::python {
 namespace {
 
-// The CLI's names (asperity run --friction / --frame).
-const std::map<std::string, LimitSurfaceKind> kFrictionNames = {
-    {"coulomb", LimitSurfaceKind::Coulomb},
-    {"box", LimitSurfaceKind::Box},
-    {"polygon", LimitSurfaceKind::Polygon}};
-const std::map<std::string, FrameMode> kFrameNames = {{"world", FrameMode::World},
-                                                      {"body", FrameMode::Body},
-                                                      {"auto", FrameMode::Auto},
-                                                      {"texture", FrameMode::Texture}};
-
-template <typename T>
-T lookup(const std::map<std::string, T>& names, const std::string& key, const char* what) {
-  const auto it = names.find(key);
-  if (it != names.end()) return it->second;
-  std::string known;
-  for (const auto& [name, value] : names) known += (known.empty() ? "" : ", ") + name;
-  throwValue(std::string(what) + ": unknown value '" + key + "' (available: " + known + ")");
+// An enumeration by the name the CLI and scenes use; ValueError naming the keyword otherwise.
+template <typename E>
+E lookup(EnumNames<E> names, const std::string& key, const char* what) {
+  try {
+    return parseName<E>(key, names, what);
+  } catch (const Error& e) {
+    throwValue(e.what());
+  }
 }
 
 // The scene with the same overrides as `asperity run`, checked like its options.
@@ -49,8 +40,9 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
   auto w = std::make_unique<PyWorld>();
   w->scene = sceneFrom(scene_arg).desc;
   WorldSettings& s = w->scene.settings;
-  if (friction) s.limit_surface = lookup(kFrictionNames, *friction, "friction");
-  if (frame) s.frame_mode = lookup(kFrameNames, *frame, "frame");
+  if (friction)
+    s.limit_surface = lookup<LimitSurfaceKind>(kLimitSurfaceNames, *friction, "friction");
+  if (frame) s.frame_mode = lookup<FrameMode>(kFrameModeNames, *frame, "frame");
   if (sampler) {
     if (!options.providers.has(*sampler)) {
       try {

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "asperity/math/enum_names.hpp"
 #include "asperity/math/types.hpp"
 
 namespace asperity::scene {
@@ -83,8 +84,7 @@ class JsonReader {
   Quat quaternion(const std::string& key, const Quat& fallback);
   // One of the listed names; the error lists them all.
   template <typename E>
-  E enumeration(const std::string& key, E fallback,
-                const std::vector<std::pair<const char*, E>>& names);
+  E enumeration(const std::string& key, E fallback, EnumNames<E> names);
 
   // A member that must be an object; absent -> an empty object reader (nothing read).
   JsonReader object(const std::string& key);
@@ -118,8 +118,7 @@ std::string oneOf(const std::vector<std::string>& names);
 std::string describeValue(const nlohmann::json& value);
 
 template <typename E>
-E JsonReader::enumeration(const std::string& key, E fallback,
-                          const std::vector<std::pair<const char*, E>>& names) {
+E JsonReader::enumeration(const std::string& key, E fallback, EnumNames<E> names) {
   const nlohmann::json* v = member(key);
   if (v == nullptr) return fallback;
   std::vector<std::string> list;
@@ -132,10 +131,8 @@ E JsonReader::enumeration(const std::string& key, E fallback,
 
 // The name of an enumerator (for saving), or "" when absent from the list.
 template <typename E>
-std::string enumName(E value, const std::vector<std::pair<const char*, E>>& names) {
-  for (const auto& [name, e] : names)
-    if (e == value) return name;
-  return {};
+std::string enumName(E value, EnumNames<E> names) {
+  return nameOf(value, names);
 }
 
 }  // namespace asperity::scene

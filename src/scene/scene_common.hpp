@@ -11,33 +11,7 @@
 
 namespace asperity::scene {
 
-template <typename E>
-using Names = std::vector<std::pair<const char*, E>>;
-
-inline const Names<LimitSurfaceKind> kLimitSurfaceNames = {{"coulomb", LimitSurfaceKind::Coulomb},
-                                                           {"box", LimitSurfaceKind::Box},
-                                                           {"polygon", LimitSurfaceKind::Polygon}};
-inline const Names<FrameMode> kFrameModeNames = {{"world", FrameMode::World},
-                                                 {"body", FrameMode::Body},
-                                                 {"auto", FrameMode::Auto},
-                                                 {"texture", FrameMode::Texture}};
-inline const Names<BodyType> kBodyTypeNames = {{"dynamic", BodyType::Dynamic},
-                                               {"static", BodyType::Static},
-                                               {"kinematic", BodyType::Kinematic}};
-inline const Names<ShapeType> kShapeTypeNames = {
-    {"box", ShapeType::Box},          {"sphere", ShapeType::Sphere},
-    {"capsule", ShapeType::Capsule},  {"cylinder", ShapeType::Cylinder},
-    {"plane", ShapeType::Plane},      {"convex_hull", ShapeType::ConvexHull},
-    {"mesh", ShapeType::TriangleMesh}};
-inline const Names<JointType> kJointTypeNames = {{"distance", JointType::Distance},
-                                                 {"ball", JointType::Ball},
-                                                 {"hinge", JointType::Hinge},
-                                                 {"fixed", JointType::Fixed}};
-inline const Names<LoadDesc::Kind> kLoadKindNames = {
-    {"force", LoadDesc::Kind::Force},
-    {"torque", LoadDesc::Kind::Torque},
-    {"impulse", LoadDesc::Kind::Impulse},
-    {"angular_impulse", LoadDesc::Kind::AngularImpulse}};
+// The enumerations' names live beside them (kLimitSurfaceNames, kFrameModeNames, ...).
 
 // Largest length, mass, speed... a scene may hold; keeps overflow out of the step.
 inline constexpr double kHuge = 1e6;

@@ -5,11 +5,16 @@
 #include <vector>
 
 #include "asperity/geometry/shape.hpp"
+#include "asperity/math/enum_names.hpp"
 #include "asperity/math/types.hpp"
 
 namespace asperity {
 
 enum class BodyType { Static, Kinematic, Dynamic };
+inline constexpr std::pair<const char*, BodyType> kBodyTypeNames[] = {
+    {"dynamic", BodyType::Dynamic},
+    {"static", BodyType::Static},
+    {"kinematic", BodyType::Kinematic}};
 
 using BodyId = uint32_t;
 inline constexpr BodyId kNoBody = 0xffffffffu;

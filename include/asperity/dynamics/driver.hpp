@@ -6,6 +6,7 @@
 #include <string>
 
 #include "asperity/dynamics/body.hpp"
+#include "asperity/math/enum_names.hpp"
 #include "asperity/math/types.hpp"
 
 namespace asperity {
@@ -32,6 +33,11 @@ struct LoadDesc {
   double start = 0.0;               // s
   double end = 1e30;                // s (ignored by impulses)
 };
+inline constexpr std::pair<const char*, LoadDesc::Kind> kLoadKindNames[] = {
+    {"force", LoadDesc::Kind::Force},
+    {"torque", LoadDesc::Kind::Torque},
+    {"impulse", LoadDesc::Kind::Impulse},
+    {"angular_impulse", LoadDesc::Kind::AngularImpulse}};
 
 // World position of a spring's target at time t (s).
 inline Vec3 springTarget(const SpringDesc& spring, double time) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "asperity/dynamics/body.hpp"
+#include "asperity/math/enum_names.hpp"
 #include "asperity/math/types.hpp"
 
 namespace asperity {
@@ -15,6 +16,11 @@ enum class JointType {
   Hinge,     // ball + two angular rows keeping axis_a parallel to axis_b
   Fixed      // ball + three angular rows keeping the initial relative orientation
 };
+inline constexpr std::pair<const char*, JointType> kJointTypeNames[] = {
+    {"distance", JointType::Distance},
+    {"ball", JointType::Ball},
+    {"hinge", JointType::Hinge},
+    {"fixed", JointType::Fixed}};
 
 struct JointDesc {
   std::string name;

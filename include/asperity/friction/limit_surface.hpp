@@ -8,11 +8,16 @@
 #pragma once
 
 #include "asperity/friction/directions.hpp"
+#include "asperity/math/enum_names.hpp"
 #include "asperity/math/types.hpp"
 
 namespace asperity {
 
 enum class LimitSurfaceKind { Coulomb, Box, Polygon };
+inline constexpr std::pair<const char*, LimitSurfaceKind> kLimitSurfaceNames[] = {
+    {"coulomb", LimitSurfaceKind::Coulomb},
+    {"box", LimitSurfaceKind::Box},
+    {"polygon", LimitSurfaceKind::Polygon}};
 
 // Isotropic Coulomb disc of radius mu lambda_n.
 struct CoulombLimit {

@@ -7,11 +7,17 @@
 #include <vector>
 
 #include "asperity/geometry/surface.hpp"
+#include "asperity/math/enum_names.hpp"
 #include "asperity/math/types.hpp"
 
 namespace asperity {
 
 enum class ShapeType { Box, Sphere, Capsule, Cylinder, Plane, ConvexHull, TriangleMesh };
+inline constexpr std::pair<const char*, ShapeType> kShapeTypeNames[] = {
+    {"box", ShapeType::Box},          {"sphere", ShapeType::Sphere},
+    {"capsule", ShapeType::Capsule},  {"cylinder", ShapeType::Cylinder},
+    {"plane", ShapeType::Plane},      {"convex_hull", ShapeType::ConvexHull},
+    {"mesh", ShapeType::TriangleMesh}};
 
 // Triangles with optional per-vertex UVs (meshes from OBJ keep theirs).
 struct TriangleMeshData {
@@ -25,11 +31,11 @@ struct Shape {
   ShapeType type = ShapeType::Box;
   Transform local;  // shape frame relative to the body frame (compounds = several shapes)
 
-  Vec3 half_extents = Vec3(0.1, 0.1, 0.1);  // Box (unit: m)
-  double radius = 0.1;                      // Sphere, Capsule, Cylinder (unit: m)
-  double half_height = 0.1;                 // Capsule, Cylinder: half length of the axis (m)
-  Vec3 plane_normal = Vec3::UnitZ();        // Plane (static bodies only)
-  double plane_offset = 0.0;                // Plane (m)
+  Vec3 half_extents = Vec3(0.1, 0.1, 0.1);       // Box (unit: m)
+  double radius = 0.1;                           // Sphere, Capsule, Cylinder (unit: m)
+  double half_height = 0.1;                      // Capsule, Cylinder: half length of the axis (m)
+  Vec3 plane_normal = Vec3::UnitZ();             // Plane (static bodies only)
+  double plane_offset = 0.0;                     // Plane (m)
   std::shared_ptr<const TriangleMeshData> mesh;  // ConvexHull (points) or TriangleMesh
 
   double density = 1000.0;  // kg/m^3, for mass and inertia of dynamic bodies

@@ -21,6 +21,7 @@
 #include "asperity/dynamics/driver.hpp"
 #include "asperity/dynamics/joint.hpp"
 #include "asperity/friction/limit_surface.hpp"
+#include "asperity/math/enum_names.hpp"
 #include "asperity/sampler/friction_provider.hpp"
 
 namespace asperity {
@@ -39,6 +40,11 @@ enum class FrameMode {
   Auto,    // along the relative sliding velocity after a few frictionless iterations
   Texture  // along the +u direction of B's texture (planes and boxes), else World
 };
+inline constexpr std::pair<const char*, FrameMode> kFrameModeNames[] = {
+    {"world", FrameMode::World},
+    {"body", FrameMode::Body},
+    {"auto", FrameMode::Auto},
+    {"texture", FrameMode::Texture}};
 
 // Most worker threads a world may ask for (WorldSettings::threads).
 inline constexpr int kMaxThreads = 1024;
