@@ -71,6 +71,46 @@ Vec3 onTrueSurface(const ShapeRecord& r, const Vec3& witness, const Vec3& outwar
   return witness;
 }
 
+// One shape's straight sweep over the coming step (Bullet's convex cast): the earliest hit on
+// each other shape it may collide with, planes left to their own speculative path.
+struct SweepHit {
+  int record = -1;
+  double fraction = 1.0;  // of the sweep at first touch
+  Vec3 point;             // on the other shape at first touch (Bullet units)
+  Vec3 normal;            // out of the other shape, toward the swept one
+  int triangle = -1;      // of a triangle mesh, as Bullet reports it
+};
+
+template <class Filter>
+struct SweepHits : btCollisionWorld::ConvexResultCallback {
+  Filter accepts;
+  std::vector<SweepHit> hits;
+  explicit SweepHits(Filter f) : accepts(f) {}
+  bool needsCollision(btBroadphaseProxy* proxy) const override {
+    return accepts(static_cast<const btCollisionObject*>(proxy->m_clientObject)->getUserIndex());
+  }
+  btScalar addSingleResult(btCollisionWorld::LocalConvexResult& r, bool normal_in_world) override {
+    const int record = r.m_hitCollisionObject->getUserIndex();
+    const btVector3 n = normal_in_world
+                            ? r.m_hitNormalLocal
+                            : r.m_hitCollisionObject->getWorldTransform().getBasis() *
+                                  r.m_hitNormalLocal;
+    const int triangle = r.m_localShapeInfo ? r.m_localShapeInfo->m_triangleIndex : -1;
+    const SweepHit hit{record, r.m_hitFraction, fromBt(r.m_hitPointLocal), fromBt(n).normalized(),
+                       triangle};
+    auto same = std::find_if(hits.begin(), hits.end(),
+                             [&](const SweepHit& h) { return h.record == record; });
+    if (same == hits.end()) {
+      hits.push_back(hit);
+    } else if (hit.fraction < same->fraction) {
+      *same = hit;
+    }
+    // Every shape along the way is reported, not only the nearest: the first may be a floor
+    // slid along, which the sweep does not approach.
+    return m_closestHitFraction;
+  }
+};
+
 }  // namespace
 
 struct CollisionDetector::Impl {
@@ -239,6 +279,8 @@ struct CollisionDetector::Impl {
   void collectManifolds();
   Contact manifoldContact(const btManifoldPoint& pt, const ShapeRecord& r0, const ShapeRecord& r1);
   void collectPlane(int r0, int r1);
+  void collectSwept();
+  Contact sweptContact(const ShapeRecord& moving, const Vec3& displacement, const SweepHit& hit);
 };
 
 void CollisionDetector::Impl::createWorld(size_t shape_count) {
@@ -389,6 +431,68 @@ void CollisionDetector::Impl::collectPlane(int r0, int r1) {
   }
 }
 
+// Fast shapes against other bodies: a shape that moves more than a quarter of its size this
+// step is swept along its velocity; each body it would reach, and does not touch yet, gets a
+// speculative contact (phi < 0, the gap at first touch along the normal), so the solver lets it
+// close the gap but not pass through a thin wall, a rod or another body (docs/collision.md).
+void CollisionDetector::Impl::collectSwept() {
+  if (speculative_time <= 0.0 || !world) return;
+  std::set<std::pair<BodyId, BodyId>> touching;
+  for (const Contact& c : contacts) touching.insert({c.body_a, c.body_b});
+  for (size_t i = 0; i < records.size(); ++i) {
+    const ShapeRecord& r = records[i];
+    if (r.body_type != BodyType::Dynamic || !r.bullet.shape->isConvex()) continue;
+    const Vec3 displacement = speculative_time * r.velocity;
+    if (displacement.norm() <= 0.25 * r.size) continue;
+    const int self = static_cast<int>(i);
+    auto accepts = [this, self](int other) {
+      return !isPlanePair(self, other) && shouldCollide(self, other);
+    };
+    SweepHits<decltype(accepts)> sweep(accepts);
+    const btTransform from = toBt(r.world, scale);
+    btTransform to = from;
+    to.setOrigin(from.getOrigin() + toBt(displacement * scale));
+    world->convexSweepTest(static_cast<const btConvexShape*>(r.bullet.shape.get()), from, to,
+                           sweep);
+    for (const SweepHit& hit : sweep.hits) {
+      // Only approaches: a face slid along or a body moved away from needs no contact.
+      if (hit.normal.dot(displacement) >= -1e-3 * displacement.norm()) continue;
+      const ShapeRecord& other = records[static_cast<size_t>(hit.record)];
+      const auto pair = isA(r, other) ? std::pair{r.body, other.body} : std::pair{other.body, r.body};
+      if (touching.count(pair)) continue;
+      contacts.push_back(sweptContact(r, displacement, hit));
+    }
+  }
+}
+
+Contact CollisionDetector::Impl::sweptContact(const ShapeRecord& moving, const Vec3& displacement,
+                                              const SweepHit& hit) {
+  const ShapeRecord& other = records[static_cast<size_t>(hit.record)];
+  const bool moving_is_a = isA(moving, other);
+  const ShapeRecord& ra = moving_is_a ? moving : other;
+  const ShapeRecord& rb = moving_is_a ? other : moving;
+  // The touching points: on the other shape where it is hit, on the moving one where that
+  // point of it is now.
+  const Vec3 on_other = hit.point / scale;
+  const Vec3 on_moving = on_other - hit.fraction * displacement;
+  Contact c;
+  c.body_a = ra.body, c.body_b = rb.body;
+  c.shape_a = ra.index, c.shape_b = rb.index;
+  c.normal = moving_is_a ? hit.normal : Vec3(-hit.normal);
+  c.witness_a = moving_is_a ? on_moving : on_other;
+  c.witness_b = moving_is_a ? on_other : on_moving;
+  const bool static_mesh =
+      other.shape.type == ShapeType::TriangleMesh && other.body_type != BodyType::Dynamic;
+  if (static_mesh) (moving_is_a ? c.feature_b : c.feature_a) = hit.triangle;
+  finishContact(c, ra.shape, ra.world, rb.shape, rb.world);
+  // Allowed to close the gap and 1 % of its size more: it arrives just inside, where the next
+  // step's narrowphase sees a face as a face (several points), not a grazing corner that
+  // would leave it spinning on through a thin wall.
+  c.phi -= 0.01 * moving.size;
+  c.key = contactKey(c, kSweptPointTag);
+  return c;
+}
+
 CollisionDetector::CollisionDetector() : impl_(std::make_unique<Impl>()) {}
 CollisionDetector::~CollisionDetector() = default;
 
@@ -460,6 +564,7 @@ void CollisionDetector::Impl::collect(std::span<const Body> bodies) {
     sdfPairContacts(records[static_cast<size_t>(r0)], records[static_cast<size_t>(r1)], settings,
                     sdf, contacts);
   }
+  collectSwept();
 }
 
 const std::vector<Contact>& CollisionDetector::detect(std::span<const Body> bodies) {

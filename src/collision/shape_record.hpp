@@ -52,8 +52,9 @@ inline uint64_t contactKey(const Contact& c, uint64_t point_id) {
   return mixKey(h, point_id);
 }
 
-// Tags keeping the point ids of the three contact paths apart.
+// Tags keeping the point ids of the contact paths apart.
 inline constexpr uint64_t kPlanePointTag = uint64_t{1} << 61;
 inline constexpr uint64_t kSdfPointTag = uint64_t{1} << 62;
+inline constexpr uint64_t kSweptPointTag = uint64_t{1} << 60;
 
 }  // namespace asperity::collision_detail

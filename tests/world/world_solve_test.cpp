@@ -214,6 +214,79 @@ TEST(WorldSolve, FastShapesDoNotTunnelThroughAPlane) {
   }
 }
 
+// A fast body thrown along +x (no gravity) at a static obstacle whose near side is at x = 0:
+// how far past that side its leading face got over 100 steps (m; <= 0 when it never passed).
+double farthestPastObstacle(const Shape& moving, double lead, double speed, double dt,
+                            const Shape& obstacle, double obstacle_x) {
+  WorldSettings s;
+  s.dt = dt;
+  s.gravity = Vec3::Zero();
+  World world(s);
+  BodyDesc wall;
+  wall.name = "obstacle";
+  wall.type = BodyType::Static;
+  wall.pose.position = Vec3(obstacle_x, 0, 0);
+  wall.shapes = {obstacle};
+  world.createBody(wall);
+  BodyDesc desc;
+  desc.name = "fast";
+  desc.pose.position = Vec3(-lead - 0.3, 0, 0);
+  desc.linear_velocity = Vec3(speed, 0, 0);
+  desc.shapes = {moving};
+  const BodyId id = world.createBody(desc);
+  double farthest = -1.0;
+  for (int i = 0; i < 100; ++i) {
+    world.step();
+    farthest = std::max(farthest, world.body(id).pose.position.x() + lead);
+  }
+  return farthest;
+}
+
+TEST(WorldSolve, FastShapesDoNotTunnelThroughAThinWall) {
+  // Box, sphere and capsule at 10 and 100 m/s (up to 1 m per 10 ms step) against a static box
+  // wall 1 cm thick: they stop at its face, never beyond its far side.
+  Shape wall;
+  wall.type = ShapeType::Box;
+  wall.half_extents = Vec3(0.005, 1.0, 1.0);
+  Shape box;
+  box.type = ShapeType::Box;
+  box.half_extents = Vec3::Constant(0.05);
+  Shape sphere;
+  sphere.type = ShapeType::Sphere;
+  sphere.radius = 0.05;
+  Shape capsule;  // along x, its end cap leading
+  capsule.type = ShapeType::Capsule;
+  capsule.radius = 0.02;
+  capsule.half_height = 0.05;
+  capsule.local.rotation = Quat(Eigen::AngleAxisd(kPi / 2, Vec3::UnitY()));
+  const std::pair<Shape, double> cases[] = {{box, 0.05}, {sphere, 0.05}, {capsule, 0.07}};
+  for (const auto& [shape, lead] : cases) {
+    for (const double speed : {10.0, 100.0}) {
+      SCOPED_TRACE("shape " + std::to_string(static_cast<int>(shape.type)) + " at " +
+                   std::to_string(speed) + " m/s");
+      EXPECT_LT(farthestPastObstacle(shape, lead, speed, 0.01, wall, 0.005), 0.005);
+    }
+  }
+}
+
+TEST(WorldSolve, FastChainLinkDoesNotTunnelThroughARod) {
+  // A flat 5 mm chain link (5 x 40 x 25 mm, thin side leading) at 10 m/s against a static rod
+  // 2 cm across, at dt 1 ms (1 cm per step) and 10 ms (10 cm per step): it never gets past
+  // the rod's axis.
+  Shape link;
+  link.type = ShapeType::Box;
+  link.half_extents = Vec3(0.0025, 0.02, 0.0125);
+  Shape rod;  // along y
+  rod.type = ShapeType::Cylinder;
+  rod.radius = 0.01;
+  rod.half_height = 0.4;
+  rod.local.rotation = Quat(Eigen::AngleAxisd(kPi / 2, Vec3::UnitX()));
+  for (const double dt : {0.001, 0.01}) {
+    SCOPED_TRACE("dt " + std::to_string(dt));
+    EXPECT_LT(farthestPastObstacle(link, 0.0025, 10.0, dt, rod, 0.01), 0.01);
+  }
+}
+
 TEST(WorldSolve, BodyBelowAPlaneIsPushedOut) {
   // A plane is a half-space: a cube found wholly 0.5 m under the ground comes back up.
   World world;
