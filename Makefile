@@ -2,8 +2,8 @@
 #   make demo   installs missing Debian packages, builds (Release) into build/, runs the main job
 #   make test   installs missing Debian packages, builds, runs the whole test suite through CTest
 # Reliability (docs/reliability.md):
-#   make sanitize  the whole test suite built with ASan + UBSan (build-sanitize/)
-#   make fuzz      every libFuzzer target for FUZZ_SECONDS each (clang, build-fuzz/)
+#   make sanitize  the whole test suite built by clang with ASan + UBSan (build-sanitize/)
+#   make fuzz      every libFuzzer target for FUZZ_SECONDS each (the same build)
 #   make soak      every experiment scene for SOAK_SECONDS simulated (default 600)
 BUILD ?= build
 JOBS ?= $(shell nproc)
@@ -11,11 +11,11 @@ OUT ?= out
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release -DASPERITY_WERROR=ON
 
 SANITIZE_BUILD ?= build-sanitize
-FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 60
+FUZZ_TARGETS ?= scene png obj generators asset cli
 SOAK_SECONDS ?= 600
 
-.PHONY: all deps configure build demo test bench format clean sanitize fuzz soak
+.PHONY: all deps configure build demo test bench format clean sanitize-build sanitize fuzz soak
 
 all: build
 
@@ -34,23 +34,26 @@ demo: build
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 600
 
-# Sanitizer reports abort the test that made them; Mesa's own leaks are suppressed by name.
-sanitize: deps
-	@cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DASPERITY_WERROR=ON \
-	  -DASPERITY_SANITIZE=address,undefined -DASPERITY_BUILD_BENCH=OFF -DASPERITY_WITH_PYTHON=OFF >/dev/null
+# One clang build with ASan + UBSan serves the test suite and the libFuzzer targets alike, so
+# the library is compiled once for both. Sanitizer reports abort the test that made them;
+# libraries' own leaks (Mesa, fontconfig, assimp) are suppressed by name (tests/sanitizer/).
+# (The Python module is left out: it would need the sanitizer runtime preloaded into the
+# interpreter.)
+sanitize-build: deps
+	@cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=clang \
+	  -DCMAKE_CXX_COMPILER=clang++ -DASPERITY_SANITIZE=address,undefined -DASPERITY_FUZZ=ON \
+	  -DASPERITY_BUILD_BENCH=OFF -DASPERITY_WITH_PYTHON=OFF >/dev/null
 	@cmake --build $(SANITIZE_BUILD) -j$(JOBS)
+
+sanitize: sanitize-build
 	@cd $(SANITIZE_BUILD) && \
 	  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizer/lsan.supp:print_suppressions=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 	  ctest --output-on-failure -j$(JOBS) --timeout 1200
 
-fuzz: deps
-	@cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=clang \
-	  -DCMAKE_CXX_COMPILER=clang++ -DASPERITY_FUZZ=ON -DASPERITY_WITH_GL=OFF \
-	  -DASPERITY_BUILD_TESTS=OFF -DASPERITY_BUILD_BENCH=OFF -DASPERITY_WITH_PYTHON=OFF >/dev/null
-	@cmake --build $(FUZZ_BUILD) -j$(JOBS) --target asperity_fuzzers
-	@tests/fuzz/run.sh $(FUZZ_BUILD)/bin $(FUZZ_SECONDS)
+fuzz: sanitize-build
+	@tests/fuzz/run.sh $(SANITIZE_BUILD)/bin $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 soak: build
 	@cd $(BUILD) && ASPERITY_SOAK_SECONDS=$(SOAK_SECONDS) ctest --output-on-failure -j$(JOBS) \
@@ -63,4 +66,4 @@ format:
 	@git ls-files '*.cpp' '*.hpp' | xargs clang-format -i
 
 clean:
-	@rm -rf $(BUILD) $(OUT) $(SANITIZE_BUILD) $(FUZZ_BUILD)
+	@rm -rf $(BUILD) $(OUT) $(SANITIZE_BUILD)

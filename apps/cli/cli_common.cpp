@@ -13,6 +13,17 @@
 
 namespace asperity::cli {
 
+void registerAllCommands(CLI::App& app) {
+  registerTextureCommand(app);
+  registerConeCommand(app);
+  registerRunCommand(app);
+  registerSweepCommand(app);
+  registerPatchCommand(app);
+  registerRenderCommand(app);
+  registerBenchCommand(app);
+  registerReportCommand(app);
+}
+
 void printError(const std::string& message) {
   // One line: a message from CLI11 or the library may hold newlines.
   std::string line = message;

@@ -2,8 +2,9 @@
 // (each in its own file), the uniform error path, and number validators.
 //
 // Adding a subcommand: write apps/cli/<name>_command.cpp defining registerXCommand, declare it
-// below, and call it from main.cpp. Its callback throws asperity::Error on bad input; runCli
-// prints `asperity: error: <message>` (one line) and returns 1.
+// below, and call it from registerAllCommands (cli_common.cpp). Its callback throws
+// asperity::Error on bad input; runCli prints `asperity: error: <message>` (one line) and
+// returns 1.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -16,6 +17,15 @@ namespace asperity::cli {
 // Subcommands (apps/cli/<name>_command.cpp).
 void registerTextureCommand(CLI::App& app);
 void registerConeCommand(CLI::App& app);
+void registerRunCommand(CLI::App& app);
+void registerSweepCommand(CLI::App& app);
+void registerPatchCommand(CLI::App& app);
+void registerRenderCommand(CLI::App& app);
+void registerBenchCommand(CLI::App& app);
+void registerReportCommand(CLI::App& app);
+
+// Every subcommand, in the order `asperity --help` lists them (the tool and its fuzz target).
+void registerAllCommands(CLI::App& app);
 
 // Parses argv and runs the chosen subcommand's callback. Returns the process exit code:
 // 0 on success and for --help, 2 for a usage error (CLI11's message), 1 for any other error.

@@ -16,6 +16,7 @@
 
 #include "asperity/error.hpp"
 #include "asperity/scene/scene.hpp"
+#include "asperity/world/run_loop.hpp"
 #include "asperity/world/state_check.hpp"
 #include "cli_common.hpp"
 
@@ -162,10 +163,7 @@ SceneDesc loadWithOverrides(const RunOptions& opt, const FrictionProviders& prov
 // Number of steps: --steps, else ceil(--seconds / dt), else one simulated second.
 int64_t stepCount(const RunOptions& opt, double dt) {
   if (opt.steps) return *opt.steps;
-  const double seconds = opt.seconds ? *opt.seconds : 1.0;
-  const double n = std::ceil(seconds / dt - 1e-9);
-  if (!(n <= 1e9)) throw Error("--seconds: more than 1e9 steps of " + std::to_string(dt) + " s");
-  return static_cast<int64_t>(n);
+  return stepsFor(opt.seconds ? *opt.seconds : 1.0, dt, "--seconds");
 }
 
 void writeFile(const std::string& path, const std::string& text, const char* what) {
@@ -190,14 +188,11 @@ void runScene(const RunOptions& opt) {
   if (trajectory) appendRows(csv, *world, 0);
   ProfileSums sums;
   Progress progress(steps);
-  for (int64_t i = 1; i <= steps; ++i) {
-    world->step();
-    sums.add(world->profile());
+  const double wall_s = runSteps(*world, steps, &sums, [&](int64_t i) {
     if (trajectory && i % opt.every == 0) appendRows(csv, *world, i);
     progress.update(i);
-  }
+  });
   progress.finish();
-  const double wall_s = progress.seconds();
   // Outputs: the trajectory, the statistics, and the hash or a one-line summary on stdout.
   if (trajectory) writeFile(opt.out, csv, "--out");
   if (!opt.stats.empty())

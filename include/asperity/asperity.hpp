@@ -40,5 +40,6 @@
 #include "asperity/sweep/sweep.hpp"
 #include "asperity/world/builders.hpp"
 #include "asperity/world/debug_draw.hpp"
+#include "asperity/world/run_loop.hpp"
 #include "asperity/world/state_check.hpp"
 #include "asperity/world/world.hpp"

@@ -7,6 +7,7 @@
 
 #include "asperity/error.hpp"
 #include "asperity/scene/friction_providers.hpp"
+#include "asperity/world/run_loop.hpp"
 #include "world_state.hpp"
 #ifdef ASPERITY_HAVE_RENDER
 #include "asperity/sampler/gl_patch_sampler.hpp"
@@ -178,7 +179,7 @@ void bindWorld(py::module_& m) {
             if (n < 0) throwValue("step: n must be >= 0, got " + std::to_string(n));
             // Other Python threads run while this world steps.
             py::gil_scoped_release release;
-            for (int64_t i = 0; i < n; ++i) w.world->step();
+            runSteps(*w.world, n);
           },
           py::arg("n") = 1, "Advances the world by n steps of dt (the GIL is released).")
       .def_property_readonly(

@@ -16,6 +16,7 @@
 
 #include "asperity/error.hpp"
 #include "geometry/asset_import_internal.hpp"
+#include "geometry/child_probe.hpp"
 
 namespace asperity {
 
@@ -214,6 +215,8 @@ ImportedAsset importAsset(const std::string& path, const AssetImportOptions& opt
     throw Error(path + ": unknown mesh format '." + ext +
                 "' (read: .obj, .gltf, .glb, .fbx, .dae, .3ds)");
   if (!std::filesystem::is_regular_file(path)) throw Error(path + ": cannot open file");
+  // assimp may crash on a malformed file: a child reads it first (geometry/child_probe.hpp).
+  detail::probeInChild(path, [&] { Assimp::Importer().ReadFile(path, kImportFlags); });
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path, kImportFlags);
   if (!scene) throw Error(path + ": cannot import (" + importerError(importer) + ")");
@@ -226,9 +229,17 @@ ImportedAsset importAssetFromMemory(const std::vector<uint8_t>& bytes, const std
                                     const std::string& extension,
                                     const AssetImportOptions& options) {
   if (!(options.scale > 0)) throw Error(name + ": mesh scale must be positive");
+  // OBJ is read from files only, by tinyobjloader with its MTL beside it, as importAsset does;
+  // assimp's own OBJ parser crashes on malformed input (tests/fuzz, docs/reliability.md).
+  if (extension == "obj")
+    throw Error(name + ": OBJ cannot be read from memory (an OBJ and its MTL are read from files)");
   if (!isAssimpExtension(extension))
     throw Error(name + ": unknown mesh format '" + extension + "'");
   if (bytes.empty()) throw Error(name + ": empty file");
+  detail::probeInChild(name, [&] {
+    Assimp::Importer().ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags,
+                                          extension.c_str());
+  });
   Assimp::Importer importer;
   const aiScene* scene =
       importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, extension.c_str());

@@ -6,9 +6,10 @@
 #include <cmath>
 #include <tuple>
 #include <type_traits>
+#include <utility>
+#include <variant>
 
 #include "parallel/thread_pool.hpp"
-#include "solver/inline_projections.hpp"
 
 namespace asperity {
 
@@ -19,6 +20,14 @@ constexpr size_t kParallelRows = 256;
 
 // Tag for the frictionless pass (frame mode Auto): normal rows only.
 struct NoFriction {};
+
+// An empty vector of the limit surface `kind` (LimitSurfaceTypes in enum order).
+template <size_t... I>
+ContactSolver::LimitVectors emptyLimits(LimitSurfaceKind kind, std::index_sequence<I...>) {
+  ContactSolver::LimitVectors out;
+  ((static_cast<size_t>(kind) == I ? static_cast<void>(out.emplace<I>()) : void()), ...);
+  return out;
+}
 
 }  // namespace
 
@@ -46,9 +55,8 @@ void ContactSolver::begin(std::span<const Body> bodies, const SolverSettings& se
   }
   rows_.clear();
   order_.clear();
-  coulomb_.clear();
-  box_.clear();
-  polygon_.clear();
+  limits_ = emptyLimits(settings.limit_surface,
+                        std::make_index_sequence<std::tuple_size_v<LimitSurfaceTypes>>());
   balls_.clear();
   axes_.clear();
   warm_started_ = false;
@@ -116,27 +124,20 @@ void ContactSolver::prepareContact(const Contact& c, ContactRow& row) const {
 void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction) {
   friction_ = friction;
   rows_.resize(contacts.size());
-  coulomb_.clear();
-  box_.clear();
-  polygon_.clear();
+  std::visit([](auto& limits) { limits.clear(); }, limits_);
   size_t cursor = 0;
   for (size_t i = 0; i < contacts.size(); ++i) {
     const Contact& c = contacts[i];
     ContactRow& row = rows_[i];
     prepareContact(c, row);
-    // The limit surface chosen in the settings (SPEC 4).
+    // The limit surface chosen in the settings (SPEC 4), built from the contact.
     if (friction) {
-      switch (settings_.limit_surface) {
-        case LimitSurfaceKind::Coulomb:
-          coulomb_.push_back(CoulombLimit{settings_.coulomb_mu});
-          break;
-        case LimitSurfaceKind::Box:
-          box_.push_back(BoxLimit::fromDirectional(c.mu));
-          break;
-        case LimitSurfaceKind::Polygon:
-          polygon_.push_back(PolygonLimit{c.mu});
-          break;
-      }
+      std::visit(
+          [&](auto& limits) {
+            using Limit = typename std::decay_t<decltype(limits)>::value_type;
+            limits.push_back(Limit::fromContact(c.mu, settings_.coulomb_mu));
+          },
+          limits_);
     }
     if (settings_.warm_starting) {
       if (const Cached* cached = findCached(c, cursor)) warmStartRow(*cached, row, i);
@@ -198,9 +199,7 @@ void ContactSolver::storeInSweepOrder() {
       sorted.push_back(std::move(limits[static_cast<size_t>(order_[k])]));
     limits.swap(sorted);
   };
-  permute(coulomb_);
-  permute(box_);
-  permute(polygon_);
+  std::visit(permute, limits_);
 }
 
 bool ContactSolver::Cached::operator<(const Cached& o) const {
@@ -232,18 +231,9 @@ void ContactSolver::warmStartRow(const Cached& cached, ContactRow& row, size_t i
   if (!friction_) return;
   const Vec2 tb(range.first->tangential.dot(row.t),
                 range.first->tangential.dot(row.n.cross(row.t)));
-  Vec2 projected = tb;
-  switch (settings_.limit_surface) {
-    case LimitSurfaceKind::Coulomb:
-      projected = coulomb_[index].project(tb, row.lambda_n);
-      break;
-    case LimitSurfaceKind::Box:
-      projected = box_[index].project(tb, row.lambda_n);
-      break;
-    case LimitSurfaceKind::Polygon:
-      projected = polygon_[index].project(tb, row.lambda_n);
-      break;
-  }
+  const Vec2 projected =
+      std::visit([&](const auto& limits) { return limits[index].project(tb, row.lambda_n); },
+                 limits_);
   row.lambda_t = projected.x();
   row.lambda_b = projected.y();
 }
@@ -303,13 +293,13 @@ double ContactSolver::sweepContacts(std::span<const Limit> limits, std::span<con
       bool outside = false;
       const Vec2 step(r.inv_k.x() * vel.x() + r.inv_k.y() * vel.y(),
                       r.inv_k.y() * vel.x() + r.inv_k.z() * vel.y());
-      Vec2 next = solver_detail::projectInline(limits[i], old - step, ln, outside);
+      Vec2 next = limits[i].project(old - step, ln, outside);
       // Sliding (the block update left the limit set): redo the update in the isotropic
       // metric 1 / k_max so that the projected friction opposes the slip velocity (maximal
       // dissipation). Projecting the K^-1-metric update instead turns the friction off the
       // slip direction wherever K couples t and b, which spins a sliding box about n.
       if (outside) {
-        next = solver_detail::projectInline(limits[i], old - r.inv_k_slide * vel, ln, outside);
+        next = limits[i].project(old - r.inv_k_slide * vel, ln, outside);
       }
       const Vec2 d = next - old;
       r.lambda_t = next.x();
@@ -410,12 +400,9 @@ double ContactSolver::sweepIsland(const Island& island, int iterations) {
     const std::span<const int> rows(island.contacts);
     if (!friction_) {
       delta2 += sweepContacts(std::span<const NoFriction>(), rows);
-    } else if (settings_.limit_surface == LimitSurfaceKind::Coulomb) {
-      delta2 += sweepContacts(std::span<const CoulombLimit>(coulomb_), rows);
-    } else if (settings_.limit_surface == LimitSurfaceKind::Box) {
-      delta2 += sweepContacts(std::span<const BoxLimit>(box_), rows);
     } else {
-      delta2 += sweepContacts(std::span<const PolygonLimit>(polygon_), rows);
+      delta2 += std::visit(
+          [&](const auto& limits) { return sweepContacts(std::span(limits), rows); }, limits_);
     }
   }
   return delta2;

@@ -16,6 +16,8 @@
 
 #include <cstdint>
 #include <span>
+#include <tuple>
+#include <variant>
 #include <vector>
 
 #include "asperity/collision/contact.hpp"
@@ -110,6 +112,15 @@ class ContactSolver {
     double mass = 0.0, target = 0.0, lambda = 0.0;
   };
 
+  // One vector of limit surfaces per solve, of the type the settings name (LimitSurfaceTypes).
+  template <class Types>
+  struct VectorsOf;
+  template <class... Limit>
+  struct VectorsOf<std::tuple<Limit...>> {
+    using type = std::variant<std::vector<Limit>...>;
+  };
+  using LimitVectors = VectorsOf<LimitSurfaceTypes>::type;
+
  private:
   struct Cached {
     BodyId a, b;
@@ -155,9 +166,7 @@ class ContactSolver {
   std::vector<int> pending_;        // scratch of scheduleRows
   std::vector<int> slot_;           // contact i's row in rows_ (rows_ is stored in sweep order)
   std::vector<ContactRow> sorted_;  // scratch of storeInSweepOrder
-  std::vector<CoulombLimit> coulomb_;
-  std::vector<BoxLimit> box_;
-  std::vector<PolygonLimit> polygon_;
+  LimitVectors limits_;  // one per contact row, of the settings' limit surface
   bool friction_ = true;
   bool warm_started_ = false;
   std::vector<BallRow> balls_;

@@ -10,20 +10,6 @@ namespace asperity {
 
 namespace {
 
-// Skew-symmetric matrix [r]x with [r]x p = r x p.
-Mat3 skew(const Vec3& r) {
-  Mat3 m;
-  m << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
-  return m;
-}
-
-// Two unit vectors completing `axis` to an orthonormal basis.
-void perpendiculars(const Vec3& axis, Vec3& p, Vec3& q) {
-  const Vec3 helper = std::abs(axis.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY();
-  p = axis.cross(helper).normalized();
-  q = axis.cross(p);
-}
-
 constexpr size_t kSlots = 6;  // per joint: 3 ball + up to 3 scalar rows
 
 }  // namespace
@@ -67,8 +53,9 @@ void ContactSolver::setJoints(std::span<const SolverJoint> joints) {
     if (jd.type == JointType::Hinge) {
       const Vec3 a1 = (rotation_[a] * jd.axis_a).normalized();
       const Vec3 a2 = (rotation_[b] * jd.axis_b).normalized();
-      Vec3 p, q;
-      perpendiculars(a1, p, q);
+      // p, q complete a1 to an orthonormal basis.
+      const Vec3 p = anyPerpendicular(a1);
+      const Vec3 q = a1.cross(p);
       const Vec3 theta = a2.cross(a1);  // small-angle rotation error perpendicular to a1
       addAngularRow(ia, ib, ji, 3, p, -bias_rate * p.dot(theta));
       addAngularRow(ia, ib, ji, 4, q, -bias_rate * q.dot(theta));

@@ -11,16 +11,10 @@
 #include "asperity/error.hpp"
 #include "asperity/scene/scene.hpp"
 #include "asperity/sweep/sweep.hpp"
+#include "asperity/world/run_loop.hpp"
 
 namespace asperity {
 namespace {
-
-// Steps of `seconds` at dt, as `asperity run --seconds`: ceil(seconds / dt).
-int64_t stepsFor(double seconds, double dt) {
-  const double n = std::ceil(seconds / dt - 1e-9);
-  if (!(n <= 1e9)) throw Error("--seconds: more than 1e9 steps of " + std::to_string(dt) + " s");
-  return static_cast<int64_t>(n);
-}
 
 // "KIND:BODY" as (kind index, body index). Throws naming the measure.
 std::pair<int, size_t> resolveMeasure(const std::string& name,
@@ -76,7 +70,7 @@ Sweep::Sweep(SweepDesc desc) : desc_(std::move(desc)) {
                 "\" cannot run in a sweep (available: constant, cone, cpu)");
   for (const BodyDesc& b : scene.bodies) body_names_.push_back(b.name);
   for (const std::string& m : desc_.measures) measures_.push_back(resolveMeasure(m, body_names_));
-  steps_ = stepsFor(desc_.seconds, scene.settings.dt);
+  steps_ = stepsFor(desc_.seconds, scene.settings.dt, "--seconds");
 }
 
 SampleResult Sweep::run(int64_t index) const {
@@ -98,7 +92,7 @@ SampleResult Sweep::run(int64_t index) const {
   // Start poses for the measures, then the run.
   std::vector<Transform> start;
   for (const Body& b : world->bodies()) start.push_back(b.descriptionPose());
-  for (int64_t i = 0; i < steps_; ++i) world->step();
+  runSteps(*world, steps_);
   // Final state in the CSV's frame: the description frame's origin and its velocity.
   for (const Body& b : world->bodies()) {
     const Transform pose = b.descriptionPose();

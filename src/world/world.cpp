@@ -1,6 +1,6 @@
 // The world: bodies, joints and drivers, and the step that runs the stages in order
-// (docs/step.md). Stage bodies live beside this file: drivers.cpp, contact_frames.cpp,
-// integrate.cpp.
+// (docs/step.md). The stages live in their folders: dynamics/drivers, collision/, frames/,
+// sampler/, solver/, dynamics/integrate; world_solve.cpp hands them the world's data.
 #include "asperity/world/world.hpp"
 
 #include <algorithm>
@@ -12,6 +12,9 @@
 #include "asperity/sampler/cone_provider.hpp"
 #include "asperity/world/state_check.hpp"
 #include "collision/collision_detector.hpp"
+#include "dynamics/drivers.hpp"
+#include "dynamics/integrate.hpp"
+#include "frames/contact_frames.hpp"
 #include "parallel/thread_pool.hpp"
 #include "solver/contact_solver.hpp"
 
@@ -58,13 +61,13 @@ void World::step() {
   const Clock::time_point begin = Clock::now();
   Clock::time_point clock = begin;
   // 1. Gravity, springs and loads change the velocities (first half of semi-implicit Euler).
-  applyDrivers();
+  applyDrivers(bodies_, springs_, loads_, settings_.gravity, time_, settings_.dt);
   p.ms(Stage::Drivers) = lap(clock);
   // 2. Contacts from the current poses (normal B -> A, phi, witness points, keys).
   collide();
   p.ms(Stage::Collide) = lap(clock);
   // 3. Each contact's tangent frame (t, b) by the frame mode (SPEC 5).
-  computeFrames();
+  computeContactFrames(settings_.frame_mode, frameInputs(), contacts_, *pool_);
   p.ms(Stage::Frames) = lap(clock);
   // 4. Per-direction friction coefficients of every contact (SPEC 3, Eq. 7).
   computeFriction();
@@ -75,7 +78,7 @@ void World::step() {
   solve();
   p.ms(Stage::Solve) = lap(clock);
   // 6. Positions and orientations from the new velocities (plus position corrections).
-  integrate();
+  integratePoses(bodies_, *solver_, substepDt(), *pool_);
   p.ms(Stage::Integrate) = lap(clock);
   // 7. The clock.
   time_ += settings_.dt;

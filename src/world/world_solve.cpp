@@ -1,42 +1,17 @@
-// The middle stages of a step: collision, friction coefficients and the constraint solve.
+// The world's data handed to the middle stages of a step: collision, contact frames, friction
+// coefficients and the constraint solve (sub-steps included).
 #include <algorithm>
 
 #include "asperity/error.hpp"
 #include "asperity/world/world.hpp"
+#include "collision/bullet_shapes.hpp"
 #include "collision/collision_detector.hpp"
+#include "dynamics/integrate.hpp"
+#include "frames/contact_frames.hpp"
 #include "parallel/thread_pool.hpp"
 #include "solver/contact_solver.hpp"
 
 namespace asperity {
-
-namespace {
-
-// The smallest extent of a shape (m), the scale its contact tolerances follow.
-double shapeExtent(const Shape& s) {
-  switch (s.type) {
-    case ShapeType::Box:
-      return 2.0 * s.half_extents.minCoeff();
-    case ShapeType::Sphere:
-    case ShapeType::Capsule:
-    case ShapeType::Cylinder:
-      return 2.0 * s.radius;
-    case ShapeType::ConvexHull:
-    case ShapeType::TriangleMesh: {
-      if (!s.mesh || s.mesh->vertices.empty()) return 0.0;
-      Vec3 lo = s.mesh->vertices.front(), hi = lo;
-      for (const Vec3& v : s.mesh->vertices) {
-        lo = lo.cwiseMin(v);
-        hi = hi.cwiseMax(v);
-      }
-      return (hi - lo).minCoeff();
-    }
-    case ShapeType::Plane:
-      break;
-  }
-  return 0.0;
-}
-
-}  // namespace
 
 double World::automaticSlop() const {
   // 0.2 % of the smallest dynamic shape: 0.4 mm for 0.2 m cubes, 8 um for an M4 nut.
@@ -44,7 +19,7 @@ double World::automaticSlop() const {
   for (const Body& b : bodies_) {
     if (!b.isDynamic()) continue;
     for (const Shape& s : b.shapes) {
-      const double e = shapeExtent(s);
+      const double e = collision_detail::shapeSize(s);
       if (e > 0.0 && (smallest == 0.0 || e < smallest)) smallest = e;
     }
   }
@@ -60,6 +35,23 @@ void World::collide() {
   }
   collision_->setSpeculativeTime(settings_.dt);
   collision_->detect(bodies_, contacts_);
+}
+
+FrameInputs World::frameInputs() {
+  FrameInputs in;
+  in.bodies = bodies_;
+  in.world_axis = settings_.world_axis;
+  in.fallback_axis = settings_.fallback_axis;
+  if (frame_callback_) in.callback = [this](const Contact& c) { return frame_callback_(*this, c); };
+  in.frictionless_solve = [this](std::span<const Contact> contacts) -> const ContactSolver& {
+    solver_->begin(bodies_, solverSettings());
+    solver_->setJoints(solverJoints(time_, settings_.dt));
+    solver_->setContacts(contacts, false);
+    solver_->iterate(settings_.auto_frame_iterations);
+    return *solver_;
+  };
+  in.sliding_speed = settings_.auto_frame_speed;
+  return in;
 }
 
 void World::computeFriction() {
@@ -161,7 +153,7 @@ void World::solveSubsteps() {
   for (int k = 0; k < n; ++k) {
     // Later sub-steps: their share of the acceleration, the contacts carried along.
     if (k > 0) {
-      integrate();
+      integratePoses(bodies_, *solver_, h, *pool_);
       for (size_t i = 0; i < bodies_.size(); ++i) {
         if (!bodies_[i].isDynamic()) continue;
         bodies_[i].linear_velocity += dv[i];

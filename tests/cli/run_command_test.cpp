@@ -208,5 +208,20 @@ TEST(RunCommand, BadSceneFilesAreOneLineErrors) {
       bad, path + ": /bodies/0/shapes/0/half_extents/1: must be a positive number, got -0.1");
 }
 
+// A glTF file that crashes the asset library itself (found by fuzzing; the fuzz input's first
+// byte picks the format) ends the run with an error naming it, not with a crash.
+TEST(RunCommand, AnAssetThatCrashesTheImporterIsAnError) {
+  const std::string dir = test::tempDir("run_asset");
+  const std::string input =
+      slurpBinary(test::sourcePath("tests/fuzz/regressions/asset/gltf_assimp_segv"));
+  std::ofstream(dir + "/evil.gltf", std::ios::binary) << input.substr(1);
+  std::ofstream(dir + "/scene.json") << R"({"bodies": [{"name": "thing",
+      "shapes": [{"type": "mesh", "file": "evil.gltf"}]}]})";
+  const auto r = runCli({"run", dir + "/scene.json", "--steps", "1"});
+  EXPECT_EQ(r.exit_code, 1);
+  // With Debian's assimp 5.2.5: "evil.gltf: the importer crashed reading it (signal 11; ...)".
+  expectOneLineError(r, "evil.gltf: ");
+}
+
 }  // namespace
 }  // namespace asperity

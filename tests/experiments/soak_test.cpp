@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,8 @@ double soakSeconds() {
 
 // The scene's bounds: the box around every body's starting position, grown by its largest
 // side and at least 2 m each way (bodies slide, tumble and get thrown, but never that far).
+// Along an axis that lies in a static plane the scene has no edge: a worm may crawl on for
+// ever, but nothing may fall through the plane.
 struct Bounds {
   Vec3 lo, hi;
   bool contains(const Vec3& p) const {
@@ -36,13 +39,22 @@ struct Bounds {
 Bounds sceneBounds(const World& world) {
   Bounds b{Vec3::Constant(1e300), Vec3::Constant(-1e300)};
   for (const Body& body : world.bodies()) {
-    // Planes sit at their point; only finite positions count.
     b.lo = b.lo.cwiseMin(body.pose.position);
     b.hi = b.hi.cwiseMax(body.pose.position);
   }
   const double grow = std::max(2.0, (b.hi - b.lo).maxCoeff());
   b.lo -= Vec3::Constant(grow);
   b.hi += Vec3::Constant(grow);
+  for (const Body& body : world.bodies())
+    for (const Shape& shape : body.shapes) {
+      if (body.type != BodyType::Static || shape.type != ShapeType::Plane) continue;
+      const Vec3 n = body.descriptionPose().rotation * (shape.local.rotation * shape.plane_normal);
+      for (int axis = 0; axis < 3; ++axis)
+        if (std::abs(n[axis]) < 1e-9) {
+          b.lo[axis] = -std::numeric_limits<double>::infinity();
+          b.hi[axis] = std::numeric_limits<double>::infinity();
+        }
+    }
   return b;
 }
 

@@ -193,3 +193,48 @@ TEST(PolygonLimit, ZeroNormalImpulseAndBadCount) {
 
 }  // namespace
 }  // namespace asperity
+
+namespace asperity {
+namespace {
+
+// The solver's form of each projection reports whether the point moved (the contact slides),
+// and gives the same point as the plain one.
+TEST(LimitSurface, OutsideFlagTellsWhetherThePointMoved) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  const CoulombLimit disc{0.6};
+  const BoxLimit box{0.2, 0.3, 0.4, 0.5};
+  PolygonLimit polygon{DirectionalMu::uniform(8, 0.5f)};
+  polygon.mu.mu[3] = 0.1f;
+  int moved = 0;
+  int stayed = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec2 x(u(rng), u(rng));
+    const double ln = i % 10 == 0 ? 0.0 : std::abs(u(rng));
+    auto check = [&](const auto& limit) {
+      bool outside = false;
+      const Vec2 p = limit.project(x, ln, outside);
+      EXPECT_EQ(p, limit.project(x, ln));
+      EXPECT_EQ(outside, p != x);
+      (outside ? moved : stayed) += 1;
+    };
+    check(disc);
+    check(box);
+    check(polygon);
+  }
+  // Both cases happen: points inside and outside each surface.
+  EXPECT_GT(moved, 100);
+  EXPECT_GT(stayed, 100);
+}
+
+// Each surface builds itself from a contact's coefficients: the disc from mu0 alone.
+TEST(LimitSurface, FromContact) {
+  DirectionalMu mu = DirectionalMu::uniform(8, 0.5f);
+  mu.mu[0] = 0.9f;
+  EXPECT_EQ(CoulombLimit::fromContact(mu, 0.3).mu, 0.3);
+  EXPECT_FLOAT_EQ(static_cast<float>(BoxLimit::fromContact(mu, 0.3).mu_pos_t), 0.9f);
+  EXPECT_EQ(PolygonLimit::fromContact(mu, 0.3).mu.mu[0], 0.9f);
+}
+
+}  // namespace
+}  // namespace asperity

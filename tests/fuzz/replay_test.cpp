@@ -18,6 +18,8 @@ extern "C" int fuzzScene(const uint8_t* data, size_t size);
 extern "C" int fuzzPng(const uint8_t* data, size_t size);
 extern "C" int fuzzObj(const uint8_t* data, size_t size);
 extern "C" int fuzzGenerators(const uint8_t* data, size_t size);
+extern "C" int fuzzAsset(const uint8_t* data, size_t size);
+extern "C" int fuzzCli(const uint8_t* data, size_t size);
 
 namespace asperity {
 namespace {
@@ -60,6 +62,12 @@ TEST(FuzzReplay, ObjInputs) {
 }
 TEST(FuzzReplay, GeneratorInputs) {
   EXPECT_GT(replay("generators", fuzzGenerators), 0u);
+}
+TEST(FuzzReplay, AssetInputs) {
+  EXPECT_GT(replay("asset", fuzzAsset), 0u);
+}
+TEST(FuzzReplay, CliInputs) {
+  EXPECT_GT(replay("cli", fuzzCli), 0u);
 }
 
 }  // namespace

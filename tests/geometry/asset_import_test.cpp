@@ -147,6 +147,13 @@ TEST(AssetImport, BadPathsAndOptions) {
   EXPECT_NE(importError(fixture("plate.gltf"), options).find("scale"), std::string::npos);
   EXPECT_THROW(importAssetFromMemory({}, "empty", "glb"), Error);
   EXPECT_THROW(importAssetFromMemory({1, 2, 3}, "junk", "glb"), Error);
+  // OBJ goes through tinyobjloader from files only; from memory it is refused, not handed to
+  // assimp's OBJ parser (which a fuzzed OBJ crashed).
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  EXPECT_EQ(test::errorOf([&] {
+              importAssetFromMemory(std::vector<uint8_t>(obj.begin(), obj.end()), "tri.obj", "obj");
+            }),
+            "tri.obj: OBJ cannot be read from memory (an OBJ and its MTL are read from files)");
 }
 
 }  // namespace

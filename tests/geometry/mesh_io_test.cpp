@@ -21,16 +21,7 @@ std::string writeFile(const std::string& name, const std::string& text) {
   return path;
 }
 
-// The message of the Error thrown by f (empty when none is thrown).
-template <typename F>
-std::string errorOf(F f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return {};
-}
+using test::errorOf;
 
 // A unit square in two triangles whose second triangle uses other UVs on the shared edge.
 const char* kSeamSquare =

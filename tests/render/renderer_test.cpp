@@ -112,7 +112,8 @@ TEST(Renderer, DebugPointIsDrawnWhereItProjects) {
   EXPECT_GT(px[2], 230);
   // Without the point that pixel is not magenta.
   scene.debug.clear();
-  const uint8_t* plain = draw(scene, camera).pixel(x, y);
+  const render::Image without = draw(scene, camera);
+  const uint8_t* plain = without.pixel(x, y);
   EXPECT_FALSE(plain[0] > 230 && plain[1] < 25 && plain[2] > 230);
 }
 

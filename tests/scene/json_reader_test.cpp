@@ -6,22 +6,13 @@
 #include <cmath>
 
 #include "asperity/error.hpp"
+#include "support/test_support.hpp"
 
 namespace asperity::scene {
 namespace {
 
 using nlohmann::json;
-
-// The message of the asperity::Error that `f` throws ("" when it throws none).
-template <typename F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::errorOf;
 
 TEST(JsonReader, SyntaxErrorGivesLineAndColumn) {
   // The stray comma sits on line 3; the parser stops at the "]" after it (column 14).

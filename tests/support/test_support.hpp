@@ -6,7 +6,20 @@
 #include <string>
 #include <vector>
 
+#include "asperity/error.hpp"
+
 namespace asperity::test {
+
+// The message of the asperity::Error that `f` throws ("" when it throws none).
+template <typename F>
+std::string errorOf(F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
 
 // Relative-or-absolute closeness: |a - b| <= abs_tol + rel_tol * |b|.
 ::testing::AssertionResult near(double actual, double expected, double rel_tol,

@@ -49,9 +49,10 @@ struct ImportedAsset {
 // without UVs under a normal map, an unknown node).
 ImportedAsset importAsset(const std::string& path, const AssetImportOptions& options = {});
 
-// The same from bytes in memory; `extension` ("glb", "gltf", "obj", ...) picks the reader and
-// `name` appears in messages. Files the asset refers to cannot be read from memory: only
-// embedded and data-URI images load.
+// The same from bytes in memory; `extension` ("glb", "gltf", "fbx", "dae", "3ds") picks the
+// reader and `name` appears in messages ("obj" is refused: OBJ and its MTL are read from
+// files). Files the asset refers to cannot be read from memory: only embedded and data-URI
+// images load.
 ImportedAsset importAssetFromMemory(const std::vector<uint8_t>& bytes, const std::string& name,
                                     const std::string& extension,
                                     const AssetImportOptions& options = {});

@@ -2,6 +2,8 @@
 // texture kernels use float (see friction/).
 #pragma once
 
+#include <cmath>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -16,6 +18,20 @@ using Vec2f = Eigen::Vector2f;
 using Vec3f = Eigen::Vector3f;
 
 inline constexpr double kPi = 3.14159265358979323846;
+
+// The cross-product matrix: skew(r) * x == r.cross(x).
+inline Mat3 skew(const Vec3& r) {
+  Mat3 m;
+  m << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
+  return m;
+}
+
+// A unit vector perpendicular to the unit vector n: n x (x or y axis, whichever is further from
+// n), so the same n always gives the same vector.
+inline Vec3 anyPerpendicular(const Vec3& n) {
+  const Vec3 helper = std::abs(n.x()) < 0.6 ? Vec3::UnitX() : Vec3::UnitY();
+  return n.cross(helper).normalized();
+}
 
 // A rigid transform: x_world = rotation * x_local + position.
 struct Transform {

@@ -30,6 +30,7 @@ namespace asperity {
 class CollisionDetector;
 class ContactSolver;
 class ThreadPool;
+struct FrameInputs;
 struct SolverJoint;
 struct SolverSettings;
 
@@ -176,13 +177,10 @@ class World {
   uint64_t stateHash() const;
 
  private:
-  void applyDrivers();
   void collide();
-  void computeFrames();
+  FrameInputs frameInputs();
   void computeFriction();
   void solve();
-  void integrate();
-  void alignFramesWithSliding();
   void checkBody(BodyId id, const std::string& what) const;
   SolverSettings solverSettings() const;
   std::span<const SolverJoint> solverJoints(double t, double h);

@@ -1,6 +1,6 @@
-// Limit surfaces (SPEC 4, Eq. 9): projections of a tangential impulse onto the admissible set.
-// They run in every PGS iteration: no allocation, and O(1) for points that are already inside.
-#include "asperity/friction/limit_surface.hpp"
+// The polygon limit surface's projection (SPEC 4). It runs in every PGS iteration: no
+// allocation, and O(1) for points that are already inside.
+#include "asperity/friction/limit_surfaces/polygon_limit.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -73,44 +73,6 @@ Vec2 closestBoundaryPoint(const DirectionalMu& mu, std::span<const Vec2> dirs, c
 }
 
 }  // namespace
-
-Vec2 CoulombLimit::project(const Vec2& lambda_tb, double lambda_n) const {
-  // No normal impulse, no friction.
-  if (!(lambda_n > 0.0)) return Vec2::Zero();
-  // Scale back onto the disc of radius mu lambda_n when outside.
-  const double radius = std::max(0.0, mu) * lambda_n;
-  const double norm = lambda_tb.norm();
-  if (norm <= radius) return lambda_tb;
-  return lambda_tb * (radius / norm);
-}
-
-BoxLimit BoxLimit::fromDirectional(const DirectionalMu& mu) {
-  BoxLimit box;
-  // On the axes the samples are k = 0, N/4, N/2, 3N/4; otherwise use the polygon's radius.
-  if (mu.count >= kMinDirections && mu.count <= kMaxDirections && mu.count % 4 == 0) {
-    const size_t q = static_cast<size_t>(mu.count / 4);
-    box.mu_pos_t = mu.mu[0];
-    box.mu_pos_b = mu.mu[q];
-    box.mu_neg_t = mu.mu[2 * q];
-    box.mu_neg_b = mu.mu[3 * q];
-    return box;
-  }
-  box.mu_pos_t = mu.along(0.0);
-  box.mu_pos_b = mu.along(0.5 * kPi);
-  box.mu_neg_t = mu.along(kPi);
-  box.mu_neg_b = mu.along(1.5 * kPi);
-  return box;
-}
-
-Vec2 BoxLimit::project(const Vec2& lambda_tb, double lambda_n) const {
-  if (!(lambda_n > 0.0)) return Vec2::Zero();
-  // Eq. 9 (SPEC signs): lambda_t in [-mu_{-t} ln, mu_{+t} ln], lambda_b likewise.
-  const double t = std::clamp(lambda_tb.x(), -std::max(0.0, mu_neg_t) * lambda_n,
-                              std::max(0.0, mu_pos_t) * lambda_n);
-  const double b = std::clamp(lambda_tb.y(), -std::max(0.0, mu_neg_b) * lambda_n,
-                              std::max(0.0, mu_pos_b) * lambda_n);
-  return Vec2(t, b);
-}
 
 Vec2 PolygonLimit::project(const Vec2& lambda_tb, double lambda_n) const {
   // A default-constructed DirectionalMu (count 0) is a caller's bug: say so.

@@ -1,8 +1,8 @@
-// The last stage of a step: positions from velocities (semi-implicit Euler), orientations by
-// the exact rotation of the angular velocity over dt, renormalised.
+// The last stage of a step: poses from velocities (dynamics/integrate.hpp).
+#include "dynamics/integrate.hpp"
+
 #include <cmath>
 
-#include "asperity/world/world.hpp"
 #include "parallel/thread_pool.hpp"
 #include "solver/contact_solver.hpp"
 
@@ -19,19 +19,18 @@ Quat rotate(const Quat& q, const Vec3& w, double dt) {
 
 }  // namespace
 
-void World::integrate() {
-  // One sub-step's time (the whole step without sub-steps).
-  const double dt = substepDt();
+void integratePoses(std::span<Body> bodies, const ContactSolver& solver, double dt,
+                    const ThreadPool& pool) {
   // Each body moves alone: any split over threads gives the same poses.
-  pool_->forEach(bodies_.size(), 256, [&](size_t i) {
-    Body& b = bodies_[i];
+  pool.forEach(bodies.size(), 256, [&](size_t i) {
+    Body& b = bodies[i];
     if (b.type == BodyType::Static) return;
     // Dynamic bodies also move by the split-impulse pseudo-velocities (then forgotten).
     Vec3 v = b.linear_velocity;
     Vec3 w = b.angular_velocity;
     if (b.isDynamic()) {
-      v += solver_->pseudoLinear(static_cast<BodyId>(i));
-      w += solver_->pseudoAngular(static_cast<BodyId>(i));
+      v += solver.pseudoLinear(static_cast<BodyId>(i));
+      w += solver.pseudoAngular(static_cast<BodyId>(i));
     }
     b.pose.position += dt * v;
     b.pose.rotation = rotate(b.pose.rotation, w, dt);

@@ -1,18 +1,11 @@
-// The first stage of a step: gravity, springs and loads become velocity changes (the velocity
-// half of semi-implicit Euler), with the gyroscopic term integrated implicitly.
-#include <Eigen/LU>
+// Stage 1 of a step: gravity, springs and loads (dynamics/drivers.hpp).
+#include "dynamics/drivers.hpp"
 
-#include "asperity/world/world.hpp"
+#include <Eigen/LU>
 
 namespace asperity {
 
 namespace {
-
-Mat3 skew(const Vec3& r) {
-  Mat3 m;
-  m << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
-  return m;
-}
 
 // Torque-free rotation over dt with the gyroscopic term w x I w taken implicitly (one Newton
 // step in the body frame, as Bullet and Box2D do): stable at large spin rates.
@@ -41,26 +34,26 @@ void addForce(Body& body, const Vec3& force, const Vec3& point) {
 
 }  // namespace
 
-void World::applyDrivers() {
-  const double dt = settings_.dt;
-  for (Body& b : bodies_) {
+void applyDrivers(std::span<Body> bodies, std::span<const SpringDesc> springs,
+                  std::span<const LoadDesc> loads, const Vec3& gravity, double time, double dt) {
+  for (Body& b : bodies) {
     b.force.setZero();
     b.torque.setZero();
   }
   // Springs: f = k (target(t) - p) - c (v_p - v_target) at the attachment point.
-  for (const SpringDesc& s : springs_) {
-    Body& b = bodies_[s.body];
+  for (const SpringDesc& s : springs) {
+    Body& b = bodies[s.body];
     const Vec3 p = b.descriptionPose().apply(s.local_point);
-    const Vec3 f = s.stiffness * (springTarget(s, time_) - p) -
+    const Vec3 f = s.stiffness * (springTarget(s, time) - p) -
                    s.damping * (b.pointVelocity(p) - s.target_velocity);
     addForce(b, f, p);
   }
   // Loads: forces and torques while active; impulses once, straight into the velocities.
-  for (const LoadDesc& l : loads_) {
-    Body& b = bodies_[l.body];
+  for (const LoadDesc& l : loads) {
+    Body& b = bodies[l.body];
     if (!b.isDynamic()) continue;
     const Vec3 p = b.descriptionPose().apply(l.local_point);
-    const bool active = time_ >= l.start - 1e-9 * dt && time_ < l.end - 1e-9 * dt;
+    const bool active = time >= l.start - 1e-9 * dt && time < l.end - 1e-9 * dt;
     switch (l.kind) {
       case LoadDesc::Kind::Force:
         if (active) addForce(b, l.value, p);
@@ -69,21 +62,21 @@ void World::applyDrivers() {
         if (active) b.torque += l.value;
         break;
       case LoadDesc::Kind::Impulse:
-        if (!firesThisStep(l.start, time_, dt)) break;
+        if (!firesThisStep(l.start, time, dt)) break;
         b.linear_velocity += b.inverse_mass * l.value;
         b.angular_velocity += b.inverseInertiaWorld() * (p - b.pose.position).cross(l.value);
         break;
       case LoadDesc::Kind::AngularImpulse:
-        if (firesThisStep(l.start, time_, dt)) {
+        if (firesThisStep(l.start, time, dt)) {
           b.angular_velocity += b.inverseInertiaWorld() * l.value;
         }
         break;
     }
   }
   // v += dt (g + F/m); w += dt I^-1 tau, then the implicit gyroscopic step.
-  for (Body& b : bodies_) {
+  for (Body& b : bodies) {
     if (!b.isDynamic()) continue;
-    b.linear_velocity += dt * (settings_.gravity + b.inverse_mass * b.force);
+    b.linear_velocity += dt * (gravity + b.inverse_mass * b.force);
     b.angular_velocity += dt * (b.inverseInertiaWorld() * b.torque);
     // Isotropic inertia (cubes, spheres) has no gyroscopic torque.
     const Vec3& inv_i = b.inverse_inertia_local;

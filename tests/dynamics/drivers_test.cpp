@@ -1,5 +1,9 @@
 // The driver stage: springs (the paper's mouse spring) and timed loads.
+#include "dynamics/drivers.hpp"
+
 #include <gtest/gtest.h>
+
+#include <vector>
 
 #include "asperity/world/builders.hpp"
 #include "asperity/world/world.hpp"
@@ -94,6 +98,24 @@ TEST(Drivers, OffCentreImpulseAndTorque) {
                          world.time(), world.time() + 0.1});
   for (int i = 0; i < 20; ++i) world.step();
   EXPECT_TRUE(near(world.body(cube).angular_velocity.z(), 0.2 / inertia, 1e-6));
+}
+
+// The stage is a function of the data it is handed: bodies without a world, one impulse due
+// now, one due later; gravity reaches the dynamic body only.
+TEST(Drivers, TheStageRunsOnPlainBodies) {
+  BodyDesc floor = boxDesc("floor", Vec3(1, 1, 0.1), {});
+  floor.type = BodyType::Static;
+  std::vector<Body> bodies = {makeBody(boxDesc("cube", Vec3::Constant(0.1), {})), makeBody(floor)};
+  const double mass = 1.0 / bodies[0].inverse_mass;
+  std::vector<LoadDesc> loads(2);
+  loads[0] = {"now", 0, LoadDesc::Kind::Impulse, Vec3(2.0, 0, 0), Vec3::Zero(), 0.5};
+  loads[1] = {"later", 0, LoadDesc::Kind::Impulse, Vec3(0, 5.0, 0), Vec3::Zero(), 0.6};
+  const double dt = 0.01;
+  applyDrivers(bodies, {}, loads, Vec3(0, 0, -10.0), 0.5, dt);
+  EXPECT_TRUE(near(bodies[0].linear_velocity.x(), 2.0 / mass, 1e-12));
+  EXPECT_EQ(bodies[0].linear_velocity.y(), 0.0);
+  EXPECT_TRUE(near(bodies[0].linear_velocity.z(), -10.0 * dt, 1e-12));
+  EXPECT_EQ(bodies[1].linear_velocity, Vec3::Zero());
 }
 
 }  // namespace

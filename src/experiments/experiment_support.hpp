@@ -1,5 +1,6 @@
-// Private to the experiments: the catalog entries (experiment_evaluations.cpp) and the small
-// measuring helpers the evaluations share (trajectory distances, tilts, series, text).
+// Private to the experiments (one file per experiment in this folder): each experiment's
+// catalog entry, and the small measuring helpers the evaluations share (trajectory distances,
+// tilts, series, text, the sawtooth measures).
 #pragma once
 
 #include <string>
@@ -9,8 +10,19 @@
 
 namespace asperity::experiments {
 
-// Every experiment with its scenes, Table 1 rows and evaluation, in the paper's order.
-std::vector<Experiment> experimentEntries();
+// The catalog entries, one per file, in the paper's order (experimentCatalog lists them).
+Experiment boxesOnMaterials();
+Experiment sawtoothPlane();
+Experiment stacking();
+Experiment crawlingWorm();
+Experiment sawtoothPlaneRotated();
+Experiment chainBolas();
+Experiment tumblingBunnies();
+Experiment nutBolt();
+
+// Table 1 of the paper: k_A, k_B, mu0, w, dt (ms), contacts, total, render, averaging (ms).
+PaperRow paperRow(double k_a, double k_b, double mu0, double w, double dt_ms, int contacts,
+                  double total, double patch, double averaging);
 
 // Horizontal (x, y) distance between the first and last sample.
 double horizontalTravel(const std::vector<Transform>& poses);
@@ -29,8 +41,11 @@ Series makeSeries(const std::string& label, const std::vector<double>& time, F f
 }
 // A number with three significant digits, for explanations ("0.623").
 std::string num(double x);
+// " < " or " NOT < ", for explanations that show which link of an ordering failed.
+std::string relation(bool holds, const char* op);
 
-// The sawtooth scenes (plain and rotated): displacement along each box's pull and its tilt.
+// The sawtooth scenes (plain and rotated; sawtooth_plane.cpp): displacement along each box's
+// pull and its tilt.
 inline constexpr double kStickDistance = 0.05;  // m: less is "stuck"
 inline constexpr double kSlideDistance = 0.1;   // m: more is "sliding"
 inline constexpr double kToppleDegrees = 30.0;  // deg: more is "toppled"
@@ -44,12 +59,5 @@ struct SawtoothMeasures {
   std::string describe() const;
 };
 SawtoothMeasures measureSawtooth(const Recording& rec);
-
-// Evaluations in experiment_evaluations_more.cpp.
-Outcome evaluateChainBolas(const Experiment& e, const RunOptions& options);
-Outcome evaluateSawtoothRotated(const Experiment& e, const RunOptions& options);
-// Evaluations in experiment_evaluations_mesh.cpp.
-Outcome evaluateBunnies(const Experiment& e, const RunOptions& options);
-Outcome evaluateNutBolt(const Experiment& e, const RunOptions& options);
 
 }  // namespace asperity::experiments
