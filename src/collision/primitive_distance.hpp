@@ -13,4 +13,9 @@ bool hasPrimitiveDistance(ShapeType type);
 // Signed distance (< 0 inside) and outward unit gradient at p (shape frame); `triangle` is -1.
 SignedDistanceField::Sample primitiveSample(const Shape& shape, const Vec3& p);
 
+// True when p (shape frame) lies certainly farther than `reach` from the primitive, so that
+// primitiveSample would give a distance of at least `reach`: a test of a few products that
+// lets a query skip the exact distance of most far points with the same outcome.
+bool beyondPrimitive(const Shape& shape, const Vec3& p, double reach);
+
 }  // namespace asperity::collision_detail

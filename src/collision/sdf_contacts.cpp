@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace asperity::collision_detail {
 
@@ -14,7 +15,57 @@ int subdivisions(const Vec3& a, const Vec3& b, const Vec3& c, double spacing) {
   return std::max(1, static_cast<int>(std::ceil(longest / spacing)));
 }
 
+// A point's Morton code: 10 bits per axis over the box `all`, bits interleaved.
+uint32_t mortonCode(const Vec3& p, const Eigen::AlignedBox3d& all) {
+  const Vec3 size = all.sizes().cwiseMax(1e-300);
+  uint32_t code = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double unit = (p[axis] - all.min()[axis]) / size[axis];
+    const double scaled = std::isfinite(unit) ? std::clamp(unit * 1023.0, 0.0, 1023.0) : 0.0;
+    const auto cell = static_cast<uint32_t>(scaled);
+    for (int bit = 0; bit < 10; ++bit) code |= ((cell >> bit) & 1u) << (3 * bit + axis);
+  }
+  return code;
+}
+
+// Whether every point of a block (its box `box` in the points' frame) is certainly unseen by
+// the query: its moved box misses the bounds, or its bounding sphere lies beyond the field's
+// reach. Both are grown by far more than the rounding of moving one point, so that no point
+// that the exact test would keep is skipped. `abs_rotation`: |to_field's rotation matrix|.
+bool unseenBlock(const Eigen::AlignedBox3d& box, const Transform& to_field,
+                 const Mat3& abs_rotation, const SdfQuery& query) {
+  const Vec3 centre = to_field.apply(box.center());
+  const Vec3 half = abs_rotation * (0.5 * box.sizes());
+  const double pad = 1e-9 * (1.0 + centre.cwiseAbs().maxCoeff() + half.maxCoeff());
+  const Vec3 reach = half.array() + pad;
+  const bool misses = ((centre + reach).array() < query.bounds.min().array()).any() ||
+                      ((centre - reach).array() > query.bounds.max().array()).any();
+  return misses || (query.beyond && query.beyond(centre, 0.5 * box.sizes().norm() + pad));
+}
+
 }  // namespace
+
+SampleBlocks sampleBlocks(const std::vector<Vec3>& points) {
+  SampleBlocks blocks;
+  if (points.empty()) return blocks;
+  Eigen::AlignedBox3d all(points.front());
+  for (const Vec3& p : points) all.extend(p);
+  std::vector<std::pair<uint32_t, int>> keyed;
+  for (size_t i = 0; i < points.size(); ++i)
+    keyed.emplace_back(mortonCode(points[i], all), static_cast<int>(i));
+  std::sort(keyed.begin(), keyed.end());
+  for (const auto& [code, index] : keyed) {
+    blocks.order.push_back(index);
+    blocks.points.push_back(points[static_cast<size_t>(index)]);
+  }
+  for (size_t first = 0; first < points.size(); first += kSampleBlock) {
+    Eigen::AlignedBox3d box(blocks.points[first]);
+    for (size_t j = first; j < std::min(points.size(), first + kSampleBlock); ++j)
+      box.extend(blocks.points[j]);
+    blocks.bounds.push_back(box);
+  }
+  return blocks;
+}
 
 SurfaceSamples surfaceSamples(const TriangleMeshData& mesh, double spacing, size_t max_points) {
   auto vertex = [&](int i) { return mesh.vertices[static_cast<size_t>(i)]; };
@@ -43,6 +94,7 @@ SurfaceSamples surfaceSamples(const TriangleMeshData& mesh, double spacing, size
       }
     }
   }
+  out.blocks = sampleBlocks(out.points);
   return out;
 }
 
@@ -55,15 +107,15 @@ std::vector<SdfHit> sdfHits(const SignedDistanceField& field, const Transform& f
 
 std::vector<SdfHit> sdfHits(const DistanceFn& field, const Transform& field_world,
                             std::span<const Vec3> points, const Transform& points_world,
-                            const SdfQuery& query) {
+                            const SdfQuery& query, const SampleBlocks* blocks) {
   // Every query point in the field's frame; keep those below the distance threshold.
   const Transform to_field = field_world.inverse() * points_world;
   std::vector<SdfHit> hits;
-  for (size_t i = 0; i < points.size(); ++i) {
-    const Vec3 local = to_field.apply(points[i]);
-    if (!query.bounds.contains(local)) continue;
+  const auto test = [&](const Vec3& point, size_t i) {
+    const Vec3 local = to_field.apply(point);
+    if (!query.bounds.contains(local)) return;
     const SignedDistanceField::Sample s = field(local);
-    if (!s.inside_grid || s.distance >= query.max_distance) continue;
+    if (!s.inside_grid || s.distance >= query.max_distance) return;
     SdfHit hit;
     hit.vertex = static_cast<int>(i);
     hit.triangle = s.triangle;
@@ -73,6 +125,18 @@ std::vector<SdfHit> sdfHits(const DistanceFn& field, const Transform& field_worl
     // The nearest surface point lies along the gradient by the distance.
     hit.surface = field_world.apply(local - s.distance * s.gradient);
     hits.push_back(hit);
+  };
+  if (blocks == nullptr) {
+    for (size_t i = 0; i < points.size(); ++i) test(points[i], i);
+  } else {
+    // The visiting order does not matter: the hits are sorted below.
+    const Mat3 abs_rotation = to_field.rotation.toRotationMatrix().cwiseAbs();
+    for (size_t b = 0; b < blocks->bounds.size(); ++b) {
+      if (unseenBlock(blocks->bounds[b], to_field, abs_rotation, query)) continue;
+      const size_t end = std::min(points.size(), (b + 1) * kSampleBlock);
+      for (size_t j = b * kSampleBlock; j < end; ++j)
+        test(blocks->points[j], static_cast<size_t>(blocks->order[j]));
+    }
   }
   // Deepest first, then greedily drop hits too close to a kept one.
   std::sort(hits.begin(), hits.end(), [](const SdfHit& a, const SdfHit& b) {

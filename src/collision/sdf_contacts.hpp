@@ -13,11 +13,22 @@
 
 namespace asperity::collision_detail {
 
+// The points grouped into blocks of nearby points (kSampleBlock each, in Morton order), so
+// that a query skips the blocks that lie wholly outside the field.
+struct SampleBlocks {
+  std::vector<int> order;                   // point indices, block after block
+  std::vector<Vec3> points;                 // the points in that order (read in sequence)
+  std::vector<Eigen::AlignedBox3d> bounds;  // of each block's points
+};
+inline constexpr size_t kSampleBlock = 32;
+SampleBlocks sampleBlocks(const std::vector<Vec3>& points);
+
 // Points on a mesh's surface: its vertices and a barycentric grid on each triangle with
 // about `spacing` between points (coarsened so that there are at most `max_points`).
 struct SurfaceSamples {
   std::vector<Vec3> points;
   std::vector<int> triangle;  // the triangle each point lies on
+  SampleBlocks blocks;
 };
 SurfaceSamples surfaceSamples(const TriangleMeshData& mesh, double spacing, size_t max_points);
 
@@ -37,6 +48,9 @@ struct SdfQuery {
   double min_spacing = 0.0;   // kept hits lie at least this far apart (m)
   // Where the field can report anything (field frame); points outside are skipped unseen.
   Eigen::AlignedBox3d bounds = Eigen::AlignedBox3d(Vec3::Constant(-1e300), Vec3::Constant(1e300));
+  // Optional: true when every point within `radius` of `centre` (field frame) lies certainly
+  // farther than max_distance from the field's shape; such blocks of points are skipped.
+  std::function<bool(const Vec3& centre, double radius)> beyond;
 };
 
 // A signed distance in the field shape's frame: a grid field or an exact primitive.
@@ -44,9 +58,11 @@ using DistanceFn = std::function<SignedDistanceField::Sample(const Vec3&)>;
 
 // Queries `points` (in the frame `points_world`) against `field` (in `field_world`) and
 // returns the kept hits, deepest first (ties by vertex index, so the order is deterministic).
+// `blocks`, when given, group the points (SurfaceSamples::blocks): a block outside
+// query.bounds is skipped whole, with the same hits as testing each of its points.
 std::vector<SdfHit> sdfHits(const DistanceFn& field, const Transform& field_world,
                             std::span<const Vec3> points, const Transform& points_world,
-                            const SdfQuery& query);
+                            const SdfQuery& query, const SampleBlocks* blocks = nullptr);
 std::vector<SdfHit> sdfHits(const SignedDistanceField& field, const Transform& field_world,
                             std::span<const Vec3> points, const Transform& points_world,
                             const SdfQuery& query);

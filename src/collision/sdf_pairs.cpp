@@ -2,6 +2,7 @@
 #include "collision/sdf_pairs.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "asperity/geometry/shape_mesh.hpp"
 #include "collision/contact_geometry.hpp"
@@ -108,18 +109,31 @@ void queryContacts(const ShapeRecord& field, const ShapeRecord& query, bool fiel
     cell = grid.cellSize();
     const Vec3 span = cell * Vec3(grid.nodes(0) - 1, grid.nodes(1) - 1, grid.nodes(2) - 1);
     q.bounds = Eigen::AlignedBox3d(grid.origin(), grid.origin() + span);
-  } else {
-    distance = [&field](const Vec3& p) { return primitiveSample(field.shape, p); };
   }
   q.max_distance =
       settings.report_gaps ? (settings.contact_margin > 0 ? settings.contact_margin : cell) : 0.0;
   q.max_hits = settings.sdf_max_contacts;
   q.min_spacing = settings.sdf_min_spacing * cell;
-  if (!field.closed_mesh) q.bounds = primitiveBounds(field.shape, std::max(q.max_distance, 0.0));
+  if (!field.closed_mesh) {
+    q.bounds = primitiveBounds(field.shape, std::max(q.max_distance, 0.0));
+    // Points certainly beyond the reported distance skip the exact distance.
+    distance = [&field, reach = q.max_distance](const Vec3& p) {
+      if (beyondPrimitive(field.shape, p, reach))
+        return SignedDistanceField::Sample{.distance = std::numeric_limits<double>::infinity(),
+                                           .inside_grid = true};
+      return primitiveSample(field.shape, p);
+    };
+    // A primitive's distance changes by at most the distance moved: a block of points is
+    // beyond when its centre is beyond by the block's radius more.
+    q.beyond = [&field, reach = q.max_distance](const Vec3& centre, double radius) {
+      return beyondPrimitive(field.shape, centre, reach + radius);
+    };
+  }
   const SurfaceSamples& samples = res.samples(query);
   const ShapeRecord& ra = field_is_a ? field : query;
   const ShapeRecord& rb = field_is_a ? query : field;
-  for (const SdfHit& h : sdfHits(distance, field.world, samples.points, query.world, q)) {
+  for (const SdfHit& h :
+       sdfHits(distance, field.world, samples.points, query.world, q, &samples.blocks)) {
     // The query point is the deepest of its shape; the field gives the nearest surface point.
     Contact c;
     c.body_a = ra.body, c.body_b = rb.body;

@@ -49,5 +49,30 @@ TEST(PrimitiveDistance, SphereCapsuleCylinder) {
   EXPECT_FALSE(primitiveSample(primitive(ShapeType::Plane), Vec3::Zero()).inside_grid);
 }
 
+TEST(PrimitiveDistance, BeyondOnlyWhereTheDistanceIsAtLeastTheReach) {
+  // On a grid of points round each primitive: a point called beyond has at least the reach,
+  // and most points at twice the reach or more are called beyond.
+  for (const ShapeType type : {ShapeType::Sphere, ShapeType::Capsule, ShapeType::Cylinder}) {
+    const Shape shape = primitive(type);
+    const double reach = 0.03;
+    int far = 0, called = 0;
+    for (double x = -0.4; x <= 0.4; x += 0.01)
+      for (double z = -0.4; z <= 0.4; z += 0.01) {
+        const Vec3 p(x, 0.3 * x, z);
+        const double distance = primitiveSample(shape, p).distance;
+        const bool beyond = beyondPrimitive(shape, p, reach);
+        if (beyond) {
+          EXPECT_GE(distance, reach) << p.transpose();
+        }
+        far += distance >= 2 * reach;
+        called += beyond && distance >= 2 * reach;
+      }
+    EXPECT_GT(far, 1000);
+    EXPECT_EQ(called, far) << static_cast<int>(type);
+  }
+  EXPECT_FALSE(beyondPrimitive(primitive(ShapeType::Box), Vec3(5, 5, 5), 0.0));
+  EXPECT_FALSE(beyondPrimitive(primitive(ShapeType::Sphere), Vec3(5, 5, 5), -1.0));
+}
+
 }  // namespace
 }  // namespace asperity::collision_detail

@@ -45,5 +45,36 @@ TEST(SdfContacts, HitsAreDeepestFirstAndSpreadOut) {
   EXPECT_TRUE((hits[0].surface - Vec3(1.0, 0, 0.1)).norm() < 1e-9);
 }
 
+TEST(SdfContacts, SkippingBlocksOutsideTheFieldKeepsEveryHit) {
+  // A fine box's samples, turned and half inside a smaller box's field: the runs of points
+  // outside the field's grid are skipped whole (blocks of nearby points), and the hits are those of
+  // testing each point.
+  const SurfaceSamples samples =
+      surfaceSamples(*collision_test::boxMesh(Vec3::Constant(0.1)), 0.01, 100000);
+  ASSERT_EQ(samples.blocks.bounds.size(),
+            (samples.points.size() + kSampleBlock - 1) / kSampleBlock);
+  ASSERT_EQ(samples.blocks.order.size(), samples.points.size());
+  const auto field = SignedDistanceField::build(*collision_test::boxMesh(Vec3::Constant(0.05)), 32);
+  const Transform field_world{Vec3(0.02, -0.01, 0.13),
+                              Quat(Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()))};
+  const Transform points_world{Vec3::Zero(), Quat(Eigen::AngleAxisd(-0.2, Vec3::UnitZ()))};
+  SdfQuery q;
+  q.max_hits = 1000;
+  q.max_distance = 0.002;
+  const Vec3 span =
+      field->cellSize() * Vec3(field->nodes(0) - 1, field->nodes(1) - 1, field->nodes(2) - 1);
+  q.bounds = Eigen::AlignedBox3d(field->origin(), field->origin() + span);
+  const auto distance = [&](const Vec3& p) { return field->sample(p); };
+  const auto each = sdfHits(distance, field_world, samples.points, points_world, q);
+  const auto blocked =
+      sdfHits(distance, field_world, samples.points, points_world, q, &samples.blocks);
+  ASSERT_GT(each.size(), 10u);
+  ASSERT_EQ(blocked.size(), each.size());
+  for (size_t i = 0; i < each.size(); ++i) {
+    EXPECT_EQ(blocked[i].vertex, each[i].vertex);
+    EXPECT_EQ(blocked[i].distance, each[i].distance);
+  }
+}
+
 }  // namespace
 }  // namespace asperity::collision_detail
