@@ -49,6 +49,9 @@ using namespace collision_detail;
 
 namespace {
 
+// Hulls with more faces than this find their contact axis by GJK/EPA (Impl::manyFaces).
+constexpr size_t kSatMaxHullFaces = 64;
+
 // Bullet grows hulls and triangles by their margins in some of its algorithms and not in
 // others; the witness point is put back onto the true surface from what is known exactly:
 // the hull's face planes, the static mesh's triangle.
@@ -184,6 +187,13 @@ struct CollisionDetector::Impl {
            records[static_cast<size_t>(r1)].shape.type == ShapeType::Plane;
   }
 
+  // Bullet's separating-axis search projects every vertex on every pair of edge directions:
+  // for a hull of many faces (a scanned model's) GJK/EPA finds the axis far faster, and the
+  // clipping into contact points that follows is the same.
+  bool manyFaces(int r) const {
+    return records[static_cast<size_t>(r)].hull_planes.size() > kSatMaxHullFaces;
+  }
+
   bool isSdfPair(int r0, int r1) const {
     return settings.mesh_pairs == MeshPairMode::Auto &&
            collision_detail::isSdfPair(records[static_cast<size_t>(r0)],
@@ -202,6 +212,12 @@ struct CollisionDetector::Impl {
     }
     if (self->isSdfPair(r0, r1)) {
       self->sdf_pairs.emplace_back(r0, r1);
+      return;
+    }
+    if (self->manyFaces(r0) || self->manyFaces(r1)) {
+      btDispatcherInfo gjk_axis = info;
+      gjk_axis.m_enableSatConvex = false;
+      btCollisionDispatcher::defaultNearCallback(pair, d, gjk_axis);
       return;
     }
     btCollisionDispatcher::defaultNearCallback(pair, d, info);

@@ -231,6 +231,26 @@ TEST(CollisionDetector, ConvexHullCubeOnPlaneAndOnBox) {
   }
 }
 
+TEST(CollisionDetector, ManyFacedHullStandsOnABoxOnItsCap) {
+  // An 80-sided prism (82 faces: its contact axis comes from GJK/EPA, not the separating-axis
+  // search) standing on a static box: its cap is clipped into points at depth d, normal +z.
+  const double r = 0.05, h = 0.04, d = 1e-3;
+  auto prism = std::make_shared<TriangleMeshData>();
+  for (int i = 0; i < 80; ++i) {
+    const double a = 2 * M_PI * i / 80;
+    for (const double z : {-h, h})
+      prism->vertices.emplace_back(r * std::cos(a), r * std::sin(a), z);
+  }
+  Body table = boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0);
+  table.type = BodyType::Static;
+  const auto contacts = detectOnce({table, hullBody(prism, Vec3(0, 0, h - d))});
+  ASSERT_GE(contacts.size(), 3u);
+  for (const Contact& c : contacts) {
+    EXPECT_TRUE(near(c.phi, d, 0, 1e-4));
+    EXPECT_TRUE(near(c.normal.z(), 1.0, 0, 1e-4));
+  }
+}
+
 TEST(CollisionDetector, BoxOnStaticTriangleMeshReportsTriangles) {
   const double h = 0.1, d = 1e-3;
   const auto contacts =
