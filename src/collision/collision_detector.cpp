@@ -49,7 +49,7 @@ using namespace collision_detail;
 
 namespace {
 
-// Hulls with more faces than this find their contact axis by GJK/EPA (Impl::manyFaces).
+// Hulls with more faces than this find their contact axis by GJK/EPA (Impl::gjkAxisPair).
 constexpr size_t kSatMaxHullFaces = 64;
 
 // Bullet grows hulls and triangles by their margins in some of its algorithms and not in
@@ -94,10 +94,9 @@ struct SweepHits : btCollisionWorld::ConvexResultCallback {
   }
   btScalar addSingleResult(btCollisionWorld::LocalConvexResult& r, bool normal_in_world) override {
     const int record = r.m_hitCollisionObject->getUserIndex();
-    const btVector3 n = normal_in_world
-                            ? r.m_hitNormalLocal
-                            : r.m_hitCollisionObject->getWorldTransform().getBasis() *
-                                  r.m_hitNormalLocal;
+    const btVector3 n = normal_in_world ? r.m_hitNormalLocal
+                                        : r.m_hitCollisionObject->getWorldTransform().getBasis() *
+                                              r.m_hitNormalLocal;
     const int triangle = r.m_localShapeInfo ? r.m_localShapeInfo->m_triangleIndex : -1;
     const SweepHit hit{record, r.m_hitFraction, fromBt(r.m_hitPointLocal), fromBt(n).normalized(),
                        triangle};
@@ -188,10 +187,15 @@ struct CollisionDetector::Impl {
   }
 
   // Bullet's separating-axis search projects every vertex on every pair of edge directions:
-  // for a hull of many faces (a scanned model's) GJK/EPA finds the axis far faster, and the
-  // clipping into contact points that follows is the same.
-  bool manyFaces(int r) const {
-    return records[static_cast<size_t>(r)].hull_planes.size() > kSatMaxHullFaces;
+  // for a hull of many faces (a scanned model's) against another convex shape GJK/EPA finds
+  // the axis far faster, and the clipping into contact points that follows is the same.
+  // (Against a triangle mesh Bullet clips only after its own search, so that stays.)
+  bool gjkAxisPair(int r0, int r1) const {
+    const ShapeRecord& a = records[static_cast<size_t>(r0)];
+    const ShapeRecord& b = records[static_cast<size_t>(r1)];
+    const auto mesh = [](const ShapeRecord& r) { return r.shape.type == ShapeType::TriangleMesh; };
+    return (a.hull_planes.size() > kSatMaxHullFaces || b.hull_planes.size() > kSatMaxHullFaces) &&
+           !mesh(a) && !mesh(b);
   }
 
   bool isSdfPair(int r0, int r1) const {
@@ -214,7 +218,7 @@ struct CollisionDetector::Impl {
       self->sdf_pairs.emplace_back(r0, r1);
       return;
     }
-    if (self->manyFaces(r0) || self->manyFaces(r1)) {
+    if (self->gjkAxisPair(r0, r1)) {
       btDispatcherInfo gjk_axis = info;
       gjk_axis.m_enableSatConvex = false;
       btCollisionDispatcher::defaultNearCallback(pair, d, gjk_axis);
@@ -474,7 +478,8 @@ void CollisionDetector::Impl::collectSwept() {
       // Only approaches: a face slid along or a body moved away from needs no contact.
       if (hit.normal.dot(displacement) >= -1e-3 * displacement.norm()) continue;
       const ShapeRecord& other = records[static_cast<size_t>(hit.record)];
-      const auto pair = isA(r, other) ? std::pair{r.body, other.body} : std::pair{other.body, r.body};
+      const auto pair =
+          isA(r, other) ? std::pair{r.body, other.body} : std::pair{other.body, r.body};
       if (touching.count(pair)) continue;
       contacts.push_back(sweptContact(r, displacement, hit));
     }
