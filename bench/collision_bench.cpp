@@ -10,6 +10,7 @@
 
 #include "asperity/geometry/mesh_io.hpp"
 #include "collision/collision_detector.hpp"
+#include "collision/collision_test_scenes.hpp"
 
 namespace asperity {
 namespace {
@@ -64,29 +65,6 @@ std::vector<Body> pile() {
   return bodies;
 }
 
-// A closed square nut (7 mm across, 4 mm bore, 3.2 mm high) as a triangle mesh.
-std::shared_ptr<TriangleMeshData> squareNut() {
-  auto mesh = std::make_shared<TriangleMeshData>();
-  const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
-  for (double w : {0.0035, 0.002}) {
-    for (double z : {-0.0016, 0.0016}) {
-      for (int c = 0; c < 4; ++c) mesh->vertices.emplace_back(w * sx[c], w * sy[c], z);
-    }
-  }
-  auto quad = [&](int a, int b, int c, int d) {
-    mesh->triangles.push_back({a, b, c});
-    mesh->triangles.push_back({a, c, d});
-  };
-  for (int c = 0; c < 4; ++c) {
-    const int n = (c + 1) % 4;
-    quad(c, n, 4 + n, 4 + c);
-    quad(8 + n, 8 + c, 12 + c, 12 + n);
-    quad(4 + c, 4 + n, 12 + n, 12 + c);
-    quad(n, c, 8 + c, 8 + n);
-  }
-  return mesh;
-}
-
 // The nut leaning on a static cylinder bolt (signed-distance path).
 std::vector<Body> nutOnBolt() {
   Body bolt;
@@ -102,7 +80,8 @@ std::vector<Body> nutOnBolt() {
   nut.pose.position = Vec3(0.00025, 0, 0.002);
   Shape mesh;
   mesh.type = ShapeType::TriangleMesh;
-  mesh.mesh = squareNut();
+  // A closed square nut, 7 mm across, 4 mm bore, 3.2 mm high.
+  mesh.mesh = collision_test::squareNutMesh(0.0035, 0.002, 0.0016);
   nut.shapes.push_back(mesh);
   return {bolt, nut};
 }
