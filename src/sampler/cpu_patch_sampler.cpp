@@ -11,6 +11,7 @@
 #include "parallel/thread_pool.hpp"
 #include "sampler/patch_common.hpp"
 #include "sampler/patch_geometry.hpp"
+#include "sampler/patch_reuse.hpp"
 #include "sampler/patch_shade.hpp"
 
 namespace asperity {
@@ -166,7 +167,8 @@ void CpuPatchSampler::State::sample(std::span<const Body> bodies, Contact& conta
   averaging_ms += msBetween(t1, t2);
 }
 
-CpuPatchSampler::CpuPatchSampler() : state_(std::make_unique<State>()) {}
+CpuPatchSampler::CpuPatchSampler()
+    : state_(std::make_unique<State>()), reuse_(std::make_unique<patch::PatchReuse>()) {}
 CpuPatchSampler::~CpuPatchSampler() = default;
 
 void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& contact,
@@ -178,29 +180,35 @@ void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& conta
 void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                                           const FrictionSettings& settings) {
   validatePatchSettings(settings, "cpu sampler");
+  // Contacts whose earlier sample still holds keep it; the others are sampled.
+  const std::vector<uint8_t> reused = reuse_->reuse(bodies, contacts, settings);
+  reused_count_ = static_cast<int>(std::count(reused.begin(), reused.end(), uint8_t{1}));
   if (!pool_ || pool_->concurrency() == 1) {
     // One contact after the other; scratch is reused.
     State& st = *state_;
     st.patch_ms = st.averaging_ms = 0.0;
-    for (Contact& c : contacts) st.sample(bodies, c, settings, nullptr);
+    for (size_t i = 0; i < contacts.size(); ++i)
+      if (!reused[i]) st.sample(bodies, contacts[i], settings, nullptr);
     patch_ms_ = st.patch_ms;
     averaging_ms_ = st.averaging_ms;
-    return;
+  } else {
+    // Each contact is sampled alone (it writes only itself), with the scratch of the thread
+    // that runs it: the coefficients are the same whichever thread that is.
+    while (worker_states_.size() < static_cast<size_t>(pool_->concurrency()))
+      worker_states_.push_back(std::make_unique<State>());
+    for (auto& st : worker_states_) st->patch_ms = st->averaging_ms = 0.0;
+    pool_->forEach(contacts.size(), 4, [&](size_t i) {
+      if (reused[i]) return;
+      State& st = *worker_states_[static_cast<size_t>(ThreadPool::slot())];
+      st.sample(bodies, contacts[i], settings, nullptr);
+    });
+    patch_ms_ = averaging_ms_ = 0.0;
+    for (const auto& st : worker_states_) {
+      patch_ms_ += st->patch_ms;
+      averaging_ms_ += st->averaging_ms;
+    }
   }
-  // Each contact is sampled alone (it writes only itself), with the scratch of the thread
-  // that runs it: the coefficients are the same whichever thread that is.
-  while (worker_states_.size() < static_cast<size_t>(pool_->concurrency()))
-    worker_states_.push_back(std::make_unique<State>());
-  for (auto& st : worker_states_) st->patch_ms = st->averaging_ms = 0.0;
-  pool_->forEach(contacts.size(), 4, [&](size_t i) {
-    State& st = *worker_states_[static_cast<size_t>(ThreadPool::slot())];
-    st.sample(bodies, contacts[i], settings, nullptr);
-  });
-  patch_ms_ = averaging_ms_ = 0.0;
-  for (const auto& st : worker_states_) {
-    patch_ms_ += st->patch_ms;
-    averaging_ms_ += st->averaging_ms;
-  }
+  reuse_->remember(bodies, contacts, reused);
 }
 
 }  // namespace asperity

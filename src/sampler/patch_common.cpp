@@ -34,6 +34,10 @@ void validatePatchSettings(const FrictionSettings& s, const std::string& who,
   if (!std::isfinite(s.mu0) || s.mu0 < 0.0) {
     throw Error(who + ": mu0 must be finite and >= 0, got " + std::to_string(s.mu0));
   }
+  if (!std::isfinite(s.reuse_pixels) || s.reuse_pixels < 0.0) {
+    throw Error(who + ": reuse_pixels must be finite and >= 0, got " +
+                std::to_string(s.reuse_pixels));
+  }
 }
 
 namespace patch {

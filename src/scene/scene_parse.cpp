@@ -72,6 +72,7 @@ void parseSettings(JsonReader r, SceneDesc& scene) {
       r.number("mu_max", static_cast<double>(f.mu_max), Range::leftOpen(0.0, 1000.0)));
   f.patch_width = r.number("patch_width", f.patch_width, Range::positive(kHuge));
   f.patch_resolution = r.integer("patch_resolution", f.patch_resolution, 1, 1024);
+  f.reuse_pixels = r.number("reuse_pixels", f.reuse_pixels, Range::nonNegative(kHuge));
   scene.sampler = r.string("sampler", scene.sampler);
   if (scene.sampler.empty()) r.failAt("sampler", "must be a sampler name, got \"\"");
   r.finish();

@@ -149,6 +149,7 @@ json settingsToJson(const SceneDesc& scene) {
           {"mu_max", static_cast<double>(f.mu_max)},
           {"patch_width", f.patch_width},
           {"patch_resolution", f.patch_resolution},
+          {"reuse_pixels", f.reuse_pixels},
           {"sampler", scene.sampler}};
 }
 

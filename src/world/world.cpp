@@ -74,6 +74,7 @@ void World::step() {
   p.ms(Stage::Friction) = lap(clock);
   p.patch_ms = provider_->lastPatchTimeMs();
   p.averaging_ms = provider_->lastAveragingTimeMs();
+  p.reused = provider_->lastReusedCount();
   // 5. PGS on velocities: joints, contacts with limit-surface friction, split impulses.
   solve();
   p.ms(Stage::Solve) = lap(clock);

@@ -87,8 +87,8 @@ TEST(RunCommand, StatsHoldPerStepAverages) {
   EXPECT_EQ(stats["sampler"], "cone");
   const nlohmann::json& per_step = stats["per_step"];
   for (const char* key :
-       {"contacts", "fallbacks", "drivers_ms", "collide_ms", "frames_ms", "friction_ms", "patch_ms",
-        "averaging_ms", "solve_ms", "integrate_ms", "total_ms"})
+       {"contacts", "fallbacks", "reused", "drivers_ms", "collide_ms", "frames_ms", "friction_ms",
+        "patch_ms", "averaging_ms", "solve_ms", "integrate_ms", "total_ms"})
     EXPECT_TRUE(per_step.contains(key)) << key;
   // A box resting on a plane touches it at its four bottom corners.
   EXPECT_GT(per_step["contacts"].get<double>(), 3.0);

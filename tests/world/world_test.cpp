@@ -240,6 +240,7 @@ TEST(World, ProfileSumsAverageStepsInStageOrder) {
   b.ms(Stage::Collide) = 3.0;
   a.contacts = 10;
   b.contacts = 20;
+  a.reused = 4;
   a.total_ms = b.total_ms = 5.0;
   sums.add(a);
   sums.add(b);
@@ -249,11 +250,13 @@ TEST(World, ProfileSumsAverageStepsInStageOrder) {
   const auto means = sums.means();
   std::vector<std::string> names;
   for (const auto& [name, value] : means) names.push_back(name);
-  EXPECT_EQ(names, (std::vector<std::string>{"contacts", "fallbacks", "drivers_ms", "collide_ms",
-                                             "frames_ms", "friction_ms", "patch_ms", "averaging_ms",
-                                             "solve_ms", "integrate_ms", "total_ms"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"contacts", "fallbacks", "reused", "drivers_ms", "collide_ms",
+                                      "frames_ms", "friction_ms", "patch_ms", "averaging_ms",
+                                      "solve_ms", "integrate_ms", "total_ms"}));
   EXPECT_DOUBLE_EQ(means[0].second, 15.0);
-  EXPECT_DOUBLE_EQ(means[3].second, 2.0);
+  EXPECT_DOUBLE_EQ(means[2].second, 2.0);  // reused
+  EXPECT_DOUBLE_EQ(means[4].second, 2.0);  // collide_ms
   EXPECT_DOUBLE_EQ(means.back().second, 5.0);
 }
 

@@ -20,6 +20,10 @@
 
 namespace asperity {
 
+namespace patch {
+class PatchReuse;
+}
+
 class CpuPatchSampler : public FrictionProvider {
  public:
   CpuPatchSampler();
@@ -35,6 +39,7 @@ class CpuPatchSampler : public FrictionProvider {
   // Patch and averaging times summed over the threads (CPU time, not wall time).
   double lastPatchTimeMs() const override { return patch_ms_; }
   double lastAveragingTimeMs() const override { return averaging_ms_; }
+  int lastReusedCount() const override { return reused_count_; }
 
   // One contact, optionally with its per-pixel images. Same numbers as computeCoefficients.
   void sampleContact(std::span<const Body> bodies, Contact& contact,
@@ -44,9 +49,11 @@ class CpuPatchSampler : public FrictionProvider {
   struct State;
   std::unique_ptr<State> state_;                       // the calling thread's scratch
   std::vector<std::unique_ptr<State>> worker_states_;  // one per pool thread
+  std::unique_ptr<patch::PatchReuse> reuse_;           // earlier samples (patch coherence)
   const ThreadPool* pool_ = nullptr;
   double patch_ms_ = 0.0;
   double averaging_ms_ = 0.0;
+  int reused_count_ = 0;
 };
 
 }  // namespace asperity

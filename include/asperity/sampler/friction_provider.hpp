@@ -23,6 +23,9 @@ struct FrictionSettings {
   float mu_max = 4.0f;        // clamp of the ploughing term
   double patch_width = 0.02;  // w (m)
   int patch_resolution = 16;  // R (pixels per side)
+  // Patch coherence (cpu sampler): a contact whose surfaces moved by less than this many patch
+  // pixels (w / R each) since its patch was sampled keeps that sample. 0: sample every step.
+  double reuse_pixels = 0.0;
 };
 
 class ThreadPool;  // the world's worker threads (internal)
@@ -41,6 +44,8 @@ class FrictionProvider {
   // Time spent in the last call, split as the paper's Table 1 does (ms).
   virtual double lastPatchTimeMs() const { return 0.0; }
   virtual double lastAveragingTimeMs() const { return 0.0; }
+  // Contacts of the last call that kept an earlier sample (FrictionSettings::reuse_pixels).
+  virtual int lastReusedCount() const { return 0; }
 };
 
 }  // namespace asperity

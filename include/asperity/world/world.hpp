@@ -92,6 +92,7 @@ struct StepProfile {
   double total_ms = 0.0;
   int contacts = 0;
   int fallbacks = 0;  // contacts whose patch was empty (mu = mu0)
+  int reused = 0;     // contacts that kept an earlier patch sample (patch coherence)
 
   double& ms(Stage stage) { return stage_ms[static_cast<size_t>(stage)]; }
   double ms(Stage stage) const { return stage_ms[static_cast<size_t>(stage)]; }
@@ -104,7 +105,7 @@ struct ProfileSums {
   int64_t steps = 0;
   std::array<double, kStageCount> stage_ms{};
   double patch_ms = 0.0, averaging_ms = 0.0, total_ms = 0.0;
-  double contacts = 0.0, fallbacks = 0.0;
+  double contacts = 0.0, fallbacks = 0.0, reused = 0.0;
   int max_contacts = 0;
 
   void add(const StepProfile& step);

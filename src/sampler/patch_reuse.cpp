@@ -1,0 +1,103 @@
+// Patch coherence (see patch_reuse.hpp).
+#include "sampler/patch_reuse.hpp"
+
+#include <cmath>
+
+namespace asperity::patch {
+
+namespace {
+
+struct Tolerance {
+  double along = 0.0, depth = 0.0;  // m
+};
+
+bool sameSettings(const FrictionSettings& x, const FrictionSettings& y) {
+  return x.directions == y.directions && x.mu0 == y.mu0 && x.mu_max == y.mu_max &&
+         x.patch_width == y.patch_width && x.patch_resolution == y.patch_resolution &&
+         x.reuse_pixels == y.reuse_pixels;
+}
+
+// The contact point and its points w/2 along t and b, in a body's frame.
+std::array<Vec3, 3> framePoints(const Body& body, const Contact& c, double half_width) {
+  return {body.pose.applyInverse(c.point), body.pose.applyInverse(c.point + half_width * c.t),
+          body.pose.applyInverse(c.point + half_width * c.b)};
+}
+
+// Whether a body's frame points moved by less than the tolerances: `along` in the contact
+// plane, `depth` along the normal (the depth clip is far thinner than a pixel is wide).
+bool within(const Body& body, const Contact& c, const std::array<Vec3, 3>& then, double half_width,
+            const Tolerance& tol) {
+  const std::array<Vec3, 3> now = framePoints(body, c, half_width);
+  const Vec3 n = body.pose.rotation.conjugate() * c.normal;
+  for (size_t i = 0; i < 3; ++i) {
+    const Vec3 d = now[i] - then[i];
+    const double depth = d.dot(n);
+    if (!(std::abs(depth) < tol.depth) || !((d - depth * n).norm() < tol.along)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+PatchReuse::Key PatchReuse::keyOf(const Contact& c) {
+  return {c.body_a, c.body_b, c.shape_a, c.shape_b, c.key};
+}
+
+PatchReuse::Sample PatchReuse::record(std::span<const Body> bodies, const Contact& c) const {
+  const double half = 0.5 * settings_.patch_width;
+  Sample s;
+  s.on_a = framePoints(bodies[c.body_a], c, half);
+  s.on_b = framePoints(bodies[c.body_b], c, half);
+  s.phi = c.phi;
+  s.mu = c.mu;
+  s.covered_pixels = c.covered_pixels;
+  s.fallback = c.fallback;
+  return s;
+}
+
+std::vector<uint8_t> PatchReuse::reuse(std::span<const Body> bodies, std::span<Contact> contacts,
+                                       const FrictionSettings& settings) {
+  std::vector<uint8_t> reused(contacts.size(), 0);
+  if (!sameSettings(settings, settings_)) samples_.clear();
+  settings_ = settings;
+  tolerance_ = settings.reuse_pixels * settings.patch_width / settings.patch_resolution;
+  if (!(tolerance_ > 0.0)) return reused;
+  // Along the normal: the same share of the depth clip's margin (0.01 w, SPEC 3).
+  const Tolerance tol{tolerance_, settings.reuse_pixels * 0.01 * settings.patch_width};
+  const double half = 0.5 * settings.patch_width;
+  for (size_t i = 0; i < contacts.size(); ++i) {
+    Contact& c = contacts[i];
+    const auto found = samples_.find(keyOf(c));
+    if (found == samples_.end()) continue;
+    const Sample& s = found->second;
+    if (!(std::abs(c.phi - s.phi) < tol.depth) || !within(bodies[c.body_a], c, s.on_a, half, tol) ||
+        !within(bodies[c.body_b], c, s.on_b, half, tol))
+      continue;
+    c.mu = s.mu;
+    c.covered_pixels = s.covered_pixels;
+    c.fallback = s.fallback;
+    reused[i] = 1;
+  }
+  return reused;
+}
+
+void PatchReuse::remember(std::span<const Body> bodies, std::span<const Contact> contacts,
+                          std::span<const uint8_t> reused) {
+  if (!(tolerance_ > 0.0)) {
+    samples_.clear();
+    return;
+  }
+  std::map<Key, Sample> next;
+  for (size_t i = 0; i < contacts.size(); ++i) {
+    const Key key = keyOf(contacts[i]);
+    const auto old = samples_.find(key);
+    if (reused[i] && old != samples_.end()) {
+      next.emplace(key, old->second);
+    } else {
+      next.emplace(key, record(bodies, contacts[i]));
+    }
+  }
+  samples_ = std::move(next);
+}
+
+}  // namespace asperity::patch

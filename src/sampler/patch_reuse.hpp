@@ -1,0 +1,54 @@
+// Patch coherence (FrictionSettings::reuse_pixels): a contact whose two surfaces have moved,
+// relative to each other and to the contact frame, by less than a set distance since the step
+// that sampled its patch keeps that sample instead of rasterising the same pixels again. A
+// resting stack then samples each contact once.
+//
+// What the patch sees of a surface is fixed by where the contact frame (point, t, b) and the
+// depth clip lie on that surface's body, so each sample remembers the point, the point + w/2 t
+// and the point + w/2 b in both bodies' frames, and phi. Contacts are matched across steps by
+// their warm-start identity (bodies, shapes, key). The decisions are made before any sampling
+// and depend on the contacts alone, so they are the same for every thread count.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <span>
+#include <tuple>
+#include <vector>
+
+#include "asperity/collision/contact.hpp"
+#include "asperity/dynamics/body.hpp"
+#include "asperity/sampler/friction_provider.hpp"
+
+namespace asperity::patch {
+
+class PatchReuse {
+ public:
+  // For each contact: 1 when its last sample still holds (and is copied into it), else 0.
+  // Every contact gets 0 when settings.reuse_pixels is 0 or the settings changed.
+  std::vector<uint8_t> reuse(std::span<const Body> bodies, std::span<Contact> contacts,
+                             const FrictionSettings& settings);
+  // After sampling the others: remembers the freshly sampled contacts as they are now, keeps
+  // the reused ones' original record and forgets the contacts that are gone.
+  void remember(std::span<const Body> bodies, std::span<const Contact> contacts,
+                std::span<const uint8_t> reused);
+
+ private:
+  using Key = std::tuple<BodyId, BodyId, int, int, uint64_t>;
+  struct Sample {
+    std::array<Vec3, 3> on_a, on_b;  // the frame's three points in A's and B's body frames
+    double phi = 0.0;
+    DirectionalMu mu;
+    int covered_pixels = 0;
+    bool fallback = false;
+  };
+  static Key keyOf(const Contact& c);
+  Sample record(std::span<const Body> bodies, const Contact& c) const;
+
+  std::map<Key, Sample> samples_;
+  FrictionSettings settings_;  // those the samples were taken with
+  double tolerance_ = 0.0;     // m: reuse_pixels patch pixels
+};
+
+}  // namespace asperity::patch
