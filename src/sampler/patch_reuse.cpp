@@ -1,6 +1,7 @@
 // Patch coherence (see patch_reuse.hpp).
 #include "sampler/patch_reuse.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace asperity::patch {
@@ -43,6 +44,12 @@ PatchReuse::Key PatchReuse::keyOf(const Contact& c) {
   return {c.body_a, c.body_b, c.shape_a, c.shape_b, c.key};
 }
 
+const PatchReuse::Sample* PatchReuse::find(const Key& key) const {
+  const auto it = std::lower_bound(samples_.begin(), samples_.end(), key,
+                                   [](const Entry& e, const Key& k) { return e.first < k; });
+  return it != samples_.end() && it->first == key ? &it->second : nullptr;
+}
+
 PatchReuse::Sample PatchReuse::record(std::span<const Body> bodies, const Contact& c) const {
   const double half = 0.5 * settings_.patch_width;
   Sample s;
@@ -67,9 +74,9 @@ std::vector<uint8_t> PatchReuse::reuse(std::span<const Body> bodies, std::span<C
   const double half = 0.5 * settings.patch_width;
   for (size_t i = 0; i < contacts.size(); ++i) {
     Contact& c = contacts[i];
-    const auto found = samples_.find(keyOf(c));
-    if (found == samples_.end()) continue;
-    const Sample& s = found->second;
+    const Sample* found = find(keyOf(c));
+    if (found == nullptr) continue;
+    const Sample& s = *found;
     if (!(std::abs(c.phi - s.phi) < tol.depth) || !within(bodies[c.body_a], c, s.on_a, half, tol) ||
         !within(bodies[c.body_b], c, s.on_b, half, tol))
       continue;
@@ -87,17 +94,19 @@ void PatchReuse::remember(std::span<const Body> bodies, std::span<const Contact>
     samples_.clear();
     return;
   }
-  std::map<Key, Sample> next;
+  next_.clear();
   for (size_t i = 0; i < contacts.size(); ++i) {
     const Key key = keyOf(contacts[i]);
-    const auto old = samples_.find(key);
-    if (reused[i] && old != samples_.end()) {
-      next.emplace(key, old->second);
-    } else {
-      next.emplace(key, record(bodies, contacts[i]));
-    }
+    const Sample* old = reused[i] ? find(key) : nullptr;
+    next_.emplace_back(key, old ? *old : record(bodies, contacts[i]));
   }
-  samples_ = std::move(next);
+  // By key; of two contacts with one identity the first is kept.
+  std::stable_sort(next_.begin(), next_.end(),
+                   [](const Entry& x, const Entry& y) { return x.first < y.first; });
+  next_.erase(std::unique(next_.begin(), next_.end(),
+                          [](const Entry& x, const Entry& y) { return x.first == y.first; }),
+              next_.end());
+  std::swap(samples_, next_);
 }
 
 }  // namespace asperity::patch

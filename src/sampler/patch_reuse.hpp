@@ -12,9 +12,9 @@
 
 #include <array>
 #include <cstdint>
-#include <map>
 #include <span>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "asperity/collision/contact.hpp"
@@ -43,10 +43,13 @@ class PatchReuse {
     int covered_pixels = 0;
     bool fallback = false;
   };
+  using Entry = std::pair<Key, Sample>;
   static Key keyOf(const Contact& c);
   Sample record(std::span<const Body> bodies, const Contact& c) const;
+  const Sample* find(const Key& key) const;
 
-  std::map<Key, Sample> samples_;
+  // Sorted by key; two buffers swapped each step, so that a warm sampler does not allocate.
+  std::vector<Entry> samples_, next_;
   FrictionSettings settings_;  // those the samples were taken with
   double tolerance_ = 0.0;     // m: reuse_pixels patch pixels
 };
