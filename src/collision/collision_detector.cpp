@@ -10,9 +10,11 @@
 // manifold's local points through the double body poses, put back onto the true surfaces
 // (Bullet's margins removed, primitives exact: contact_geometry), phi from the witness points.
 //
-// Two kinds of pairs bypass Bullet's narrowphase (the near callback only records them):
-// shapes against planes (plane_contacts: exact points, a box resting flat gets its four
-// corners in one call) and pairs with a dynamic closed mesh (sdf_pairs: signed distances).
+// Three kinds of pairs bypass Bullet's narrowphase: shapes against planes (plane_contacts:
+// exact points, a box resting flat gets its four corners in one call), pairs with a dynamic
+// closed mesh (sdf_pairs: signed distances), both only recorded by the near callback, and
+// boxes, capsules and spheres against a cylinder's side (cylinder_contacts: radial normals),
+// done in the near callback, which falls back to Bullet near the cylinder's caps.
 //
 // One Bullet collision object per shape (not a btCompoundShape per body): Bullet stores a
 // compound's child index and a mesh's triangle index in the same manifold field, so separate
@@ -37,6 +39,7 @@
 #include "asperity/error.hpp"
 #include "collision/bullet_shapes.hpp"
 #include "collision/contact_geometry.hpp"
+#include "collision/cylinder_contacts.hpp"
 #include "collision/mesh_features.hpp"
 #include "collision/plane_contacts.hpp"
 #include "collision/sdf_pairs.hpp"
@@ -161,6 +164,7 @@ struct CollisionDetector::Impl {
   std::vector<std::pair<int, int>> plane_pairs;  // record pairs found by the broadphase
   std::vector<std::pair<int, int>> sdf_pairs;
   std::vector<Contact> contacts;  // this call's contacts in the order found
+  std::vector<CylinderSidePoint> side_points;  // scratch of collectCylinderSide
   std::vector<Contact> sorted;    // detect's result when the caller gives no vector
   struct SortKey {
     BodyId b;
@@ -216,6 +220,11 @@ struct CollisionDetector::Impl {
     }
     if (self->isSdfPair(r0, r1)) {
       self->sdf_pairs.emplace_back(r0, r1);
+      return;
+    }
+    if (self->collectCylinderSide(r0, r1)) {
+      // Bullet's manifold for the pair, from steps it served, would report stale points.
+      if (pair.m_algorithm) self->world->getPairCache()->cleanOverlappingPair(pair, &d);
       return;
     }
     if (self->gjkAxisPair(r0, r1)) {
@@ -299,6 +308,7 @@ struct CollisionDetector::Impl {
   void collectManifolds();
   Contact manifoldContact(const btManifoldPoint& pt, const ShapeRecord& r0, const ShapeRecord& r1);
   void collectPlane(int r0, int r1);
+  bool collectCylinderSide(int r0, int r1);
   void collectSwept();
   Contact sweptContact(const ShapeRecord& moving, const Vec3& displacement, const SweepHit& hit);
 };
@@ -449,6 +459,38 @@ void CollisionDetector::Impl::collectPlane(int r0, int r1) {
     c.key = contactKey(c, static_cast<uint64_t>(p.id) | kPlanePointTag);
     contacts.push_back(c);
   }
+}
+
+// A box, capsule or sphere against a cylinder's side; false leaves the pair to Bullet.
+bool CollisionDetector::Impl::collectCylinderSide(int r0, int r1) {
+  const ShapeRecord& x = records[static_cast<size_t>(r0)];
+  const ShapeRecord& y = records[static_cast<size_t>(r1)];
+  const bool x_cylinder = x.shape.type == ShapeType::Cylinder;
+  const ShapeRecord& cyl = x_cylinder ? x : y;
+  const ShapeRecord& other = x_cylinder ? y : x;
+  if (cyl.shape.type != ShapeType::Cylinder || !isCylinderSideShape(other.shape.type)) {
+    return false;
+  }
+  const double reach = settings.report_gaps ? gapReach(other) : 0.0;
+  if (!cylinderSidePoints(cyl.shape, cyl.world, other.shape, other.world, reach, side_points)) {
+    return false;
+  }
+  const bool other_is_a = isA(other, cyl);
+  const ShapeRecord& ra = other_is_a ? other : cyl;
+  const ShapeRecord& rb = other_is_a ? cyl : other;
+  for (const CylinderSidePoint& p : side_points) {
+    Contact c;
+    c.body_a = ra.body, c.body_b = rb.body;
+    c.shape_a = ra.index, c.shape_b = rb.index;
+    c.normal = other_is_a ? p.normal : Vec3(-p.normal);
+    c.witness_a = other_is_a ? p.on_shape : p.on_cylinder;
+    c.witness_b = other_is_a ? p.on_cylinder : p.on_shape;
+    finishContact(c, ra.shape, ra.world, rb.shape, rb.world);
+    // Gaps are kept: the lifted end of a face along the side (speculative, cylinder_contacts).
+    c.key = contactKey(c, static_cast<uint64_t>(p.id) | kCylinderPointTag);
+    contacts.push_back(c);
+  }
+  return true;
 }
 
 // Fast shapes against other bodies: a shape that moves more than a quarter of its size this

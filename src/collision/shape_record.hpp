@@ -56,5 +56,6 @@ inline uint64_t contactKey(const Contact& c, uint64_t point_id) {
 inline constexpr uint64_t kPlanePointTag = uint64_t{1} << 61;
 inline constexpr uint64_t kSdfPointTag = uint64_t{1} << 62;
 inline constexpr uint64_t kSweptPointTag = uint64_t{1} << 60;
+inline constexpr uint64_t kCylinderPointTag = uint64_t{1} << 59;
 
 }  // namespace asperity::collision_detail
