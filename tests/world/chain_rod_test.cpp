@@ -1,7 +1,7 @@
 // Oracles for chains on rods (SPEC 8), constant Coulomb friction: the in-plane capstan with a
 // fine chain, the axial hold of a chain draped over a tilted rod, the wound hold on the chain
-// bolas' rod tilt, a thrown chain winding round a rod, and a chain with heavy ends hanging wound
-// on a rod (joint error, creep). Chains are ball-jointed capsules; the rod is a static cylinder.
+// bolas' rod tilt, and a chain with heavy ends hanging wound on a rod (joint error, creep).
+// Chains are ball-jointed capsules or flat box links; the rod is a static cylinder.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -39,6 +39,7 @@ struct Chain {
   Vec3 velocity = Vec3::Zero();  // every body's initial velocity
   bool flat = false;            // flat box links (width 2 radius x thickness radius); else capsules
   Vec3 across = Vec3::UnitY();  // flat links' width lies along this axis (projected)
+  double thickness = 0.0;       // flat links' thickness (m); 0: half the link radius
 };
 
 struct Settings {
@@ -109,7 +110,8 @@ std::pair<BodyId, BodyId> build(World& world, const Rod& rod, const Chain& chain
     if (chain.flat) {
       // Thin along the link's local y (the rod's radial direction), wide along x.
       shape.type = ShapeType::Box;
-      shape.half_extents = Vec3(chain.link_radius, 0.5 * chain.link_radius, 0.5 * length);
+      const double thickness = chain.thickness > 0 ? chain.thickness : chain.link_radius;
+      shape.half_extents = Vec3(chain.link_radius, 0.5 * thickness, 0.5 * length);
     } else {
       shape.type = ShapeType::Capsule;
       shape.radius = chain.link_radius;
@@ -286,6 +288,37 @@ TEST(ChainOnRod, WoundOneAndAHalfTurnsHoldsAtMuPoint3SlidesAtPoint03) {
   EXPECT_LT(std::abs(settle(rod, c, s, 1.0).middle_along), 0.01);
   s.mu = 0.03;
   EXPECT_GT(std::abs(settle(rod, c, s, 1.0).middle_along), 0.1);
+}
+
+// Heavy ends on a light chain: the chain bolas' own chain (23 flat links of 5 x 40 x 25 mm and
+// 0.08 kg between two 2 kg spheres, 25 bodies) wound 1.5 turns on its rod (radius 19.5 mm,
+// tilted 28.6 degrees), the ends swinging at 0.5 m/s, mu 0.4, 20 iterations, one sub-step.
+// Measured: joint error 0.1 mm; after settling (0.5 s) the middle link creeps 1.7 mm along the
+// rod in 1.5 s while the ends swing (1.2 mm with 4 sub-steps; 100 iterations do not change
+// it, so it is not the solver's convergence); the ends stay within 1 cm in height.
+TEST(ChainOnRod, HeavyEndsOnALightChainHoldWoundAndKeepTheirJoints) {
+  Rod rod;
+  rod.alpha = 0.5;
+  rod.radius = 0.0195;
+  Chain c;
+  c.flat = true;
+  c.link_radius = 0.0125;  // 25 mm wide
+  c.thickness = 0.005;
+  c.link_mass = 0.08;
+  c.end_mass = c.end_mass1 = 2.0;
+  c.end_radius = 0.0266;
+  c.across = rod.axis();
+  c.points = drapedPoints(rod, 0.5 * c.thickness, 3 * kPi, 0.03, 0.32, 0.04);
+  c.points.insert(c.points.begin(), c.points.front() - Vec3(0, 0, 0.04));
+  ASSERT_EQ(c.points.size() - 1, 23u);
+  c.velocity = Vec3(0.5, 0, 0);
+  Settings s;
+  s.mu = 0.4;
+  // Settling and swinging in the first half second; no creep after it.
+  const Motion early = settle(rod, c, s, 0.5), late = settle(rod, c, s, 2.0);
+  EXPECT_LT(late.joint_error, 0.001);
+  EXPECT_LT(std::abs(late.middle_along - early.middle_along), 0.003);
+  EXPECT_LT(std::abs(late.drop0 - early.drop0), 0.005);
 }
 
 }  // namespace
