@@ -149,13 +149,14 @@ TEST(NutBolt, TorqueScrewsOnePitchPerTurnPushDoesNotSlide) {
 }
 
 // Sec. 5.1, Figs. 10 and 11: the chain should wrap the rough rod and slip off the smooth one.
-// Not reproduced (docs/experiments.md): both chains slide off; whether a thrown chain winds, drapes
-// or falls depends on the throw more than on the rod. Disabled so that the suite stays green
-// while the outcome is still measured by `asperity report`.
+// Not reproduced (docs/experiments.md): on the authors' set-up the thrown chain winds about 0.9
+// turns on either rod and slides down it, after about 1.5 s on the rough rod and 1 s on the
+// smooth one; with a constant mu it holds from about 0.6 on, the rough rod samples about 0.27.
+// Disabled so that the suite stays green while `asperity report` still measures the outcome.
 TEST(ChainBolas, DISABLED_WrapsTheRoughRodSlipsOffTheSmoothOne) {
   const Outcome out = runExperiment("chain_bolas", options());
-  EXPECT_LT(out.value("distance_rough"), 0.15);
-  EXPECT_GT(out.value("below_rod_smooth"), 0.15);
+  EXPECT_GT(out.value("height_rough"), 0.5);
+  EXPECT_LT(out.value("height_smooth"), 0.2);
   EXPECT_TRUE(out.passed) << out.explanation;
 }
 
