@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "collision/bullet_shapes.hpp"
+#include "collision/primitive_distance.hpp"
 
 namespace asperity::collision_detail {
 
@@ -12,21 +13,8 @@ namespace {
 
 // The point of the solid shape closest to `p` (world); `p` itself when inside.
 Vec3 closestOnShape(const Shape& shape, const Transform& world, const Vec3& p) {
-  const Vec3 local = world.applyInverse(p);
-  switch (shape.type) {
-    case ShapeType::Box:
-      return world.apply(local.cwiseMax(-shape.half_extents).cwiseMin(shape.half_extents));
-    case ShapeType::Capsule:
-    case ShapeType::Sphere: {
-      const double hh = shape.type == ShapeType::Capsule ? shape.half_height : 0.0;
-      const Vec3 core(0, 0, std::clamp(local.z(), -hh, hh));
-      const Vec3 out = local - core;
-      const double d = out.norm();
-      return d <= shape.radius ? p : world.apply(core + out * (shape.radius / d));
-    }
-    default:
-      return p;
-  }
+  const SignedDistanceField::Sample s = primitiveSample(shape, world.applyInverse(p));
+  return s.distance > 0 ? Vec3(p - s.distance * (world.rotation * s.gradient)) : p;
 }
 
 // The cylinder's axis as a segment: centre, unit direction, half length.

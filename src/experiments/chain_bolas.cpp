@@ -2,7 +2,6 @@
 #include <cmath>
 #include <string>
 
-#include "asperity/error.hpp"
 #include "experiment_support.hpp"
 
 namespace asperity::experiments {

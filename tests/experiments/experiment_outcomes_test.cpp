@@ -150,7 +150,7 @@ TEST(NutBolt, TorqueScrewsOnePitchPerTurnPushDoesNotSlide) {
 
 // Sec. 5.1, Figs. 10 and 11: the chain should wrap the rough rod and slip off the smooth one.
 // Not reproduced (docs/experiments.md): on the authors' set-up the thrown chain winds about 0.9
-// turns on either rod and slides down it, after about 1.5 s on the rough rod and 1 s on the
+// turns on either rod and slides down it, after about 1 s on the rough rod and 0.8 s on the
 // smooth one; with a constant mu it holds from about 0.6 on, the rough rod samples about 0.27.
 // Disabled so that the suite stays green while `asperity report` still measures the outcome.
 TEST(ChainBolas, DISABLED_WrapsTheRoughRodSlipsOffTheSmoothOne) {

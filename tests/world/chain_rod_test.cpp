@@ -39,7 +39,7 @@ struct Chain {
   Vec3 velocity = Vec3::Zero();  // every body's initial velocity
   bool flat = false;            // flat box links (width 2 radius x thickness radius); else capsules
   Vec3 across = Vec3::UnitY();  // flat links' width lies along this axis (projected)
-  double thickness = 0.0;       // flat links' thickness (m); 0: half the link radius
+  double thickness = 0.0;       // flat links' thickness (m); 0: the link radius
 };
 
 struct Settings {
@@ -171,7 +171,6 @@ std::vector<Vec3> drapedPoints(const Rod& rod, double radius, double wrap, doubl
 // Motion of a chain left for `seconds`: the two end spheres' displacement (m).
 struct Motion {
   double drop0 = 0.0, drop1 = 0.0;  // m the ends went down
-  double along = 0.0;               // m the ends' mean moved along the rod axis
   double middle_along = 0.0;        // m, the chain's middle link moved along the rod axis
   double joint_error = 0.0;         // m, largest over the run
 };
@@ -193,7 +192,6 @@ Motion settle(const Rod& rod, const Chain& chain, const Settings& s, double seco
   const Vec3 q0 = world.body(e0).pose.position, q1 = world.body(e1).pose.position;
   m.drop0 = p0.z() - q0.z();
   m.drop1 = p1.z() - q1.z();
-  m.along = 0.5 * (q0 + q1 - p0 - p1).dot(rod.axis());
   m.middle_along = (world.body(middle).pose.position - pm).dot(rod.axis());
   return m;
 }
