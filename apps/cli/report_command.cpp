@@ -53,6 +53,7 @@ th:first-child,td:first-child{text-align:left}th{background:#f3f5f8;font-weight:
 .plot text{font-size:11px;fill:#3b4452}.plot .title{font-size:13px;font-weight:600}
 .plot .grid{stroke:#eceef2}.plot .frame{fill:none;stroke:#c5cad3}
 img.frame{max-width:560px;border-radius:6px;border:1px solid #e1e4ea}
+figure{margin:0}figcaption,caption{font-size:12px;color:#7a8391;text-align:left}
 )";
 
 // The measured numbers of one experiment.
@@ -63,6 +64,19 @@ std::string measuresTable(const Outcome& out) {
     std::snprintf(value, sizeof(value), "%.4g", m.value);
     s += "<tr><td>" + htmlEscape(m.name) + "</td><td>" + value + "</td><td>" + htmlEscape(m.unit) +
          "</td></tr>";
+  }
+  return s + "</table>";
+}
+
+// A table an experiment made (cells already formatted).
+std::string resultTable(const experiments::Table& table) {
+  std::string s = "<table><caption>" + htmlEscape(table.title) + "</caption><tr>";
+  for (const auto& c : table.columns) s += "<th>" + htmlEscape(c) + "</th>";
+  s += "</tr>";
+  for (const auto& row : table.rows) {
+    s += "<tr>";
+    for (const auto& c : row) s += "<td>" + htmlEscape(c) + "</td>";
+    s += "</tr>";
   }
   return s + "</table>";
 }
@@ -107,26 +121,30 @@ std::string tableOne(const std::vector<Experiment>& list, const std::vector<Outc
   return s + "</table>";
 }
 
-// One frame of the experiment's first scene, half-way through, from `asperity render` (this
-// same executable) when built with the renderer; "" when there is none or rendering fails
-// (no GL context): the page then goes without pictures.
-std::string renderFrame(const ReportOptions& opt, const Experiment& e, const fs::path& dir) {
+// One frame of each of the experiment's scenes (half-way through unless it says when), from `asperity render` (this
+// same executable) when built with the renderer; none where rendering fails (no GL context):
+// the page then goes without pictures.
+std::string renderFrames(const ReportOptions& opt, const Experiment& e, const fs::path& dir) {
+  std::string images;
 #if ASPERITY_HAVE_RENDER
-  if (!opt.frames || e.scenes.empty()) return "";
-  const auto& run = e.scenes.front();
-  const fs::path png = dir / (e.id + ".png");
-  const std::string scene = (fs::path(opt.scenes_dir) / run.file).string();
-  char at[32];
-  std::snprintf(at, sizeof(at), "%g", run.seconds * 0.5);
-  const std::string cmd = "'" + fs::read_symlink("/proc/self/exe").string() + "' render '" + scene +
-                          "' --frame-at " + at + " --size 960x540 --out '" + png.string() +
-                          "' > /dev/null 2>&1";
-  if (std::system(cmd.c_str()) != 0 || !fs::exists(png)) return "";
-  return "<img class='frame' alt='" + htmlEscape(e.title) + "' src='" + e.id + ".png'>";
+  if (!opt.frames) return "";
+  for (const auto& run : e.scenes) {
+    const std::string name = fs::path(run.file).stem().string() + ".png";
+    const fs::path png = dir / name;
+    const std::string scene = (fs::path(opt.scenes_dir) / run.file).string();
+    char at[32];
+    std::snprintf(at, sizeof(at), "%g", run.frame_at.value_or(run.seconds * 0.5));
+    const std::string cmd = "'" + fs::read_symlink("/proc/self/exe").string() + "' render '" +
+                            scene + "' --frame-at " + at + " --size 960x540 --out '" +
+                            png.string() + "' > /dev/null 2>&1";
+    if (std::system(cmd.c_str()) != 0 || !fs::exists(png)) return images;
+    images += "<figure><img class='frame' alt='" + htmlEscape(e.title) + "' src='" + name +
+              "'><figcaption>" + htmlEscape(run.file) + " at " + at + " s</figcaption></figure>";
+  }
 #else
   (void)opt, (void)e, (void)dir;
-  return "";
 #endif
+  return images;
 }
 
 // Seconds as "%g" (3, 0.45), not std::to_string's "3.000000".
@@ -136,16 +154,18 @@ std::string seconds(double s) {
   return buffer;
 }
 
-std::string experimentSection(const Experiment& e, const Outcome& out, const std::string& image) {
+std::string experimentSection(const Experiment& e, const Outcome& out, const std::string& images) {
   std::string s = "<section id='" + e.id + "'><h2>" + htmlEscape(e.title) + "<span class='badge " +
                   (out.passed ? "pass'>reproduced" : "fail'>not reproduced") + "</span></h2>";
   s += "<p class='claim'><b>Paper.</b> " + htmlEscape(e.paper) + "</p>";
   s += "<p class='claim'><b>Tested outcome.</b> " + htmlEscape(e.expected) + "</p>";
   s += "<p class='expl'>" + htmlEscape(out.explanation) + "</p>";
   s += "<div class='plots'>";
-  if (!image.empty()) s += image;
+  s += images;
   for (const auto& plot : out.plots) s += svgPlot(plot);
-  s += "</div>" + measuresTable(out);
+  s += "</div>";
+  for (const auto& table : out.tables) s += resultTable(table);
+  s += measuresTable(out);
   s += "<p class='sub'>Scenes:";
   for (const auto& run : e.scenes)
     s += " <code>scenes/" + htmlEscape(run.file) + "</code> (" + seconds(run.seconds) + " s)";
@@ -179,7 +199,7 @@ void writeReport(const ReportOptions& opt) {
     std::fprintf(stderr, "report: %s\n", e.id.c_str());
     outcomes.push_back(experiments::runExperiment(e.id, run));
     passed += outcomes.back().passed ? 1 : 0;
-    sections += experimentSection(e, outcomes.back(), renderFrame(opt, e, dir));
+    sections += experimentSection(e, outcomes.back(), renderFrames(opt, e, dir));
   }
   // The page: summary, one section per experiment, Table 1.
   std::string summary = "<table><tr><th>experiment</th><th>outcome</th><th>measured</th></tr>";

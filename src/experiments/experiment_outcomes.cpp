@@ -61,10 +61,19 @@ RunProfile startProfile(const std::string& file, const SceneDesc& scene, double 
 
 }  // namespace
 
+SceneDesc loadExperimentScene(const std::string& file, const RunOptions& options) {
+  return loadScene((std::filesystem::path(options.scenes_dir) / file).string());
+}
+
 Recording simulate(const std::string& file, double seconds, const RunOptions& options,
                    const std::vector<std::string>& bodies, std::optional<FrameMode> frame) {
+  return simulate(loadExperimentScene(file, options), file, seconds, options, bodies, frame);
+}
+
+Recording simulate(SceneDesc scene, const std::string& file, double seconds,
+                   const RunOptions& options, const std::vector<std::string>& bodies,
+                   std::optional<FrameMode> frame) {
   const std::string path = (std::filesystem::path(options.scenes_dir) / file).string();
-  SceneDesc scene = loadScene(path);
   if (!options.sampler.empty()) scene.sampler = options.sampler;
   if (options.threads) scene.settings.threads = *options.threads;
   if (frame) scene.settings.frame_mode = *frame;

@@ -11,9 +11,11 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "asperity/scene/friction_providers.hpp"
+#include "asperity/scene/scene.hpp"
 #include "asperity/world/world.hpp"
 
 namespace asperity::experiments {
@@ -68,6 +70,13 @@ struct Plot {
   std::vector<Series> series;
 };
 
+// A table of results, e.g. one row per jittered run: cells are already formatted text.
+struct Table {
+  std::string title;
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;
+};
+
 // A measured number, e.g. {"slide_concrete", 0.62, "m"}.
 struct Measure {
   std::string name;
@@ -81,6 +90,7 @@ struct Outcome {
   std::string explanation;  // one line, with the numbers that decide it
   std::vector<Measure> measures;
   std::vector<Plot> plots;
+  std::vector<Table> tables;
   std::vector<RunProfile> profiles;  // one per scene run
   // The measure called `name`; throws asperity::Error when there is none.
   double value(const std::string& name) const;
@@ -97,9 +107,13 @@ struct RunOptions {
 
 // A scene file with the simulated time its outcome needs, and the paper's Table 1 row.
 struct SceneRun {
+  SceneRun(std::string file_, double seconds_, std::optional<PaperRow> paper_ = {},
+           std::optional<double> frame_at_ = {})
+      : file(std::move(file_)), seconds(seconds_), paper(paper_), frame_at(frame_at_) {}
   std::string file;  // relative to RunOptions::scenes_dir
   double seconds = 1.0;
   std::optional<PaperRow> paper;
+  std::optional<double> frame_at;  // s, the report's rendered frame (default: half-way)
 };
 
 struct Experiment {
@@ -136,6 +150,13 @@ struct Recording {
 Recording simulate(const std::string& file, double seconds, const RunOptions& options,
                    const std::vector<std::string>& bodies = {},
                    std::optional<FrameMode> frame = std::nullopt);
+// The same for a scene already loaded (and perhaps changed) by the caller; `file` names it in
+// the profile and in messages.
+Recording simulate(SceneDesc scene, const std::string& file, double seconds,
+                   const RunOptions& options, const std::vector<std::string>& bodies = {},
+                   std::optional<FrameMode> frame = std::nullopt);
+// scenes_dir/file loaded (asperity::Error naming the path when it cannot be).
+SceneDesc loadExperimentScene(const std::string& file, const RunOptions& options);
 
 // Runs one scene for `seconds` (no recording) and returns its per-step profile.
 // `threads` overrides the scene's WorldSettings::threads.

@@ -1,6 +1,7 @@
 // Oracles for chains on rods (SPEC 8), constant Coulomb friction: the in-plane capstan with a
 // fine chain, the axial hold of a chain draped over a tilted rod, the wound hold on the chain
-// bolas' rod tilt, and a chain with heavy ends hanging wound on a rod (joint error, creep).
+// bolas' rod tilt, a chain with heavy ends hanging wound on a rod (joint error, creep), and a
+// chain with heavy ends winding itself round a rod it is thrown at.
 // Chains are ball-jointed capsules or flat box links; the rod is a static cylinder.
 #include <gtest/gtest.h>
 
@@ -317,6 +318,71 @@ TEST(ChainOnRod, HeavyEndsOnALightChainHoldWoundAndKeepTheirJoints) {
   EXPECT_LT(late.joint_error, 0.001);
   EXPECT_LT(std::abs(late.middle_along - early.middle_along), 0.003);
   EXPECT_LT(std::abs(late.drop0 - early.drop0), 0.005);
+}
+
+// Winding (SPEC 8): the signed angle the chain's joint points turn through about the rod's axis,
+// in turns, counting the segments whose two ends lie within `near` of the axis.
+double turnsAbout(const Rod& rod, const std::vector<Vec3>& points, double near) {
+  const Vec3 x = Vec3::UnitX(), y = rod.up();
+  double angle = 0.0;
+  for (size_t i = 0; i + 1 < points.size(); ++i) {
+    const Vec3 a = points[i] - rod.centre(), b = points[i + 1] - rod.centre();
+    const Vec3 ra = a - a.dot(rod.axis()) * rod.axis(), rb = b - b.dot(rod.axis()) * rod.axis();
+    if (ra.norm() > near || rb.norm() > near) continue;
+    angle += std::remainder(std::atan2(rb.dot(y), rb.dot(x)) - std::atan2(ra.dot(y), ra.dot(x)),
+                            2 * kPi);
+  }
+  return std::abs(angle) / (2 * kPi);
+}
+
+double distanceToAxis(const Rod& rod, const Vec3& p) {
+  const Vec3 d = p - rod.centre();
+  return (d - d.dot(rod.axis()) * rod.axis()).norm();
+}
+
+// Winding: the bolas' chain (2 kg ends, 23 flat links of 0.08 kg, 40 mm apart) hanging straight
+// down with its middle at a fixed horizontal rod, thrown at it at 6 m/s, the ends also moving
+// 1 m/s along the rod in opposite senses (so that they pass each other behind the rod instead
+// of colliding there), mu 0.5, 20 iterations. The ends whip round the rod: the count of turns
+// grows and both ends finish within four link lengths of the rod's surface. Measured: 1.43
+// turns at 0.25 s, 3.97 at 2 s, ends 0.12 and 0.08 m from the axis; thrown at 4 m/s the chain
+// winds 2.9 turns with an end 0.25 m out, at 2 m/s it stays draped (0.9 turns).
+TEST(ChainOnRod, ThrownAtItsMiddleTheChainWindsRoundTheRod) {
+  Rod rod;
+  rod.radius = 0.0195;
+  Chain c;
+  c.flat = true;
+  c.link_radius = 0.0125;
+  c.thickness = 0.005;
+  c.link_mass = 0.08;
+  c.end_mass = c.end_mass1 = 2.0;
+  c.end_radius = 0.0266;
+  c.across = rod.axis();
+  c.velocity = Vec3(6, 0, 0);
+  for (int i = 0; i <= 23; ++i) c.points.push_back(Vec3(-0.1, 0, kRodZ + 0.46 - 0.04 * i));
+  Settings s;
+  s.mu = 0.5;
+  World world(worldSettings(s));
+  const auto [e0, e1] = build(world, rod, c);
+  world.body(e0).linear_velocity += rod.axis();
+  world.body(e1).linear_velocity -= rod.axis();
+  auto joints = [&] {
+    std::vector<Vec3> p = {world.body(e0).pose.position};
+    for (int i = 0; i < 23; ++i)
+      p.push_back(world.body(world.findBody("link_" + std::to_string(i))).pose.position);
+    p.push_back(world.body(e1).pose.position);
+    return p;
+  };
+  const double near = rod.radius + 0.06;  // within one and a half links of the rod
+  for (int i = 0; i < 250; ++i) world.step();
+  const double early = turnsAbout(rod, joints(), near);
+  for (int i = 0; i < 1750; ++i) world.step();
+  const double late = turnsAbout(rod, joints(), near);
+  EXPECT_GT(late, early + 1.0) << early << " turns at 0.25 s, " << late << " at 2 s";
+  EXPECT_GT(late, 2.5);
+  const double reach = rod.radius + 4 * 0.04;
+  EXPECT_LT(distanceToAxis(rod, world.body(e0).pose.position), reach);
+  EXPECT_LT(distanceToAxis(rod, world.body(e1).pose.position), reach);
 }
 
 }  // namespace
