@@ -121,9 +121,9 @@ std::string tableOne(const std::vector<Experiment>& list, const std::vector<Outc
   return s + "</table>";
 }
 
-// One frame of each of the experiment's scenes (half-way through unless it says when), from `asperity render` (this
-// same executable) when built with the renderer; none where rendering fails (no GL context):
-// the page then goes without pictures.
+// One frame of each of the experiment's scenes (half-way through unless it says when), from
+// `asperity render` (this same executable) when built with the renderer; none where rendering fails
+// (no GL context): the page then goes without pictures.
 std::string renderFrames(const ReportOptions& opt, const Experiment& e, const fs::path& dir) {
   std::string images;
 #if ASPERITY_HAVE_RENDER

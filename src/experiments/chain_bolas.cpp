@@ -1,6 +1,7 @@
 // Chain bolas (Sec. 5.1, Figs. 10 and 11): a chain thrown at a rough and at a smooth rod.
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -45,6 +46,8 @@ constexpr std::array<Jitter, 10> kJitters{{{0.850, -0.0056, 0.0078, -0.56},
 // Of the ten, the rough rod must hold at least this many and the smooth rod at most kMaxSmooth.
 constexpr int kMinRoughHeld = 8;
 constexpr int kMaxSmoothHeld = 2;
+// The chain's final centre-of-mass height for each jittered throw (m).
+using Heights = std::array<double, kJitters.size()>;
 
 // The rod's axis in the world: its cylinder's local z.
 Vec3 rodAxis(const SceneDesc& scene, const std::string& file) {
@@ -64,56 +67,6 @@ void applyJitter(SceneDesc& scene, const Jitter& j, const Vec3& axis) {
   }
 }
 
-// Mass-weighted centre of the world's dynamic bodies.
-Vec3 centreOfMass(const World& world) {
-  Vec3 sum = Vec3::Zero();
-  double mass = 0.0;
-  for (const Body& b : world.bodies()) {
-    if (!b.isDynamic()) continue;
-    sum += b.pose.position / b.inverse_mass;
-    mass += 1.0 / b.inverse_mass;
-  }
-  return mass > 0.0 ? Vec3(sum / mass) : Vec3(Vec3::Zero());
-}
-
-// Final heights of the chain's centre of mass for the ten jittered throws of one scene, run
-// side by side (each world is independent, so the numbers do not depend on the threads).
-std::array<double, kJitters.size()> jitteredHeights(const SceneRun& run,
-                                                    const RunOptions& options) {
-  const SceneDesc scene = loadExperimentScene(run.file, options);
-  const Vec3 axis = rodAxis(scene, run.file);
-  RunOptions quiet = options;
-  quiet.record_every = 1 << 30;  // only the first and last states
-  std::array<double, kJitters.size()> heights{};
-  tbb::parallel_for(size_t{0}, kJitters.size(), [&](size_t i) {
-    SceneDesc jittered = scene;
-    applyJitter(jittered, kJitters[i], axis);
-    heights[i] = centreOfMass(*simulate(jittered, run.file, run.seconds, quiet, {"ball_0"}).world).z();
-  });
-  return heights;
-}
-
-// The ten throws, one row each, with both rods' outcomes; counts how many each rod held.
-Table jitterTable(const std::array<double, kJitters.size()>& rough,
-                  const std::array<double, kJitters.size()>& smooth, int& rough_held,
-                  int& smooth_held) {
-  Table t{"Ten jittered throws: the chain's centre of mass above the ground after 3 s",
-          {"throw", "speed (x scene)", "rise (mm)", "along the rod (mm)", "heading (deg)", "rough rod (m)",
-           "smooth rod (m)"},
-          {}};
-  rough_held = smooth_held = 0;
-  auto outcome = [](double z) { return num(z) + (z > kHeldHeight ? " held" : " fell"); };
-  for (size_t i = 0; i < kJitters.size(); ++i) {
-    const Jitter& j = kJitters[i];
-    rough_held += rough[i] > kHeldHeight ? 1 : 0;
-    smooth_held += smooth[i] > kHeldHeight ? 1 : 0;
-    t.rows.push_back({std::to_string(i + 1), num(j.speed), num(j.rise * 1e3),
-                      num(j.along * 1e3), num(j.heading_deg), outcome(rough[i]),
-                      outcome(smooth[i])});
-  }
-  return t;
-}
-
 // Mass-weighted centre of the recorded bodies at sample k.
 Vec3 centreOfMass(const Recording& rec, size_t k) {
   Vec3 sum = Vec3::Zero();
@@ -125,6 +78,43 @@ Vec3 centreOfMass(const Recording& rec, size_t k) {
     mass += m;
   }
   return mass > 0.0 ? Vec3(sum / mass) : Vec3(Vec3::Zero());
+}
+
+// Final heights of the chain's centre of mass for the ten jittered throws of one scene, run
+// side by side (each world is independent, so the numbers do not depend on the threads).
+Heights jitteredHeights(const SceneRun& run, const RunOptions& options) {
+  const SceneDesc scene = loadExperimentScene(run.file, options);
+  const Vec3 axis = rodAxis(scene, run.file);
+  RunOptions quiet = options;
+  quiet.record_every = 1 << 30;  // only the first and the last state
+  Heights heights{};
+  tbb::parallel_for(size_t{0}, kJitters.size(), [&](size_t i) {
+    SceneDesc jittered = scene;
+    applyJitter(jittered, kJitters[i], axis);
+    const Recording rec = simulate(jittered, run.file, run.seconds, quiet);
+    heights[i] = centreOfMass(rec, rec.time.size() - 1).z();
+  });
+  return heights;
+}
+
+int heldCount(const Heights& heights) {
+  return static_cast<int>(
+      std::count_if(heights.begin(), heights.end(), [](double z) { return z > kHeldHeight; }));
+}
+
+// The ten throws, one row each, with both rods' outcomes.
+Table jitterTable(const Heights& rough, const Heights& smooth) {
+  Table t{"Ten jittered throws: the chain's centre of mass above the ground after 3 s",
+          {"throw", "speed (x scene)", "rise (mm)", "along the rod (mm)", "heading (deg)",
+           "rough rod (m)", "smooth rod (m)"},
+          {}};
+  auto outcome = [](double z) { return num(z) + (z > kHeldHeight ? " held" : " fell"); };
+  for (size_t i = 0; i < kJitters.size(); ++i) {
+    const Jitter& j = kJitters[i];
+    t.rows.push_back({std::to_string(i + 1), num(j.speed), num(j.rise * 1e3), num(j.along * 1e3),
+                      num(j.heading_deg), outcome(rough[i]), outcome(smooth[i])});
+  }
+  return t;
 }
 
 // Chain bolas: the same throw at each rod; on the rough rod (Ra 1 mm) the chain wraps and
@@ -146,17 +136,16 @@ Outcome evaluateChainBolas(const Experiment& e, const RunOptions& options) {
     out.measures.push_back({"height_" + label, z, "m"});
     const bool ok = rough ? z > kHeldHeight : z < kFallenHeight;
     out.passed = out.passed && ok;
-    out.explanation += (out.explanation.empty() ? "" : "; ") + label +
-                       " rod: centre of mass " + num(z) + " m above the ground after " +
-                       num(rec.time.back()) + " s" +
+    out.explanation += (out.explanation.empty() ? "" : "; ") + label + " rod: centre of mass " +
+                       num(z) + " m above the ground after " + num(rec.time.back()) + " s" +
                        (ok ? (rough ? " (held on the rod)" : " (slipped off)")
                            : (rough ? " (NOT held)" : " (did NOT slip off)"));
   }
   // The same ten jittered throws at both rods.
   const auto rough = jitteredHeights(e.scenes[0], options);
   const auto smooth = jitteredHeights(e.scenes[1], options);
-  int rough_held = 0, smooth_held = 0;
-  out.tables.push_back(jitterTable(rough, smooth, rough_held, smooth_held));
+  const int rough_held = heldCount(rough), smooth_held = heldCount(smooth);
+  out.tables.push_back(jitterTable(rough, smooth));
   out.measures.push_back({"jittered_held_rough", double(rough_held), "of 10"});
   out.measures.push_back({"jittered_held_smooth", double(smooth_held), "of 10"});
   const bool robust = rough_held >= kMinRoughHeld && smooth_held <= kMaxSmoothHeld;
