@@ -38,7 +38,10 @@ test: build
 # the library is compiled once for both. Sanitizer reports abort the test that made them;
 # libraries' own leaks (Mesa, fontconfig, assimp) are suppressed by name (tests/sanitizer/).
 # (The Python module is left out: it would need the sanitizer runtime preloaded into the
-# interpreter.)
+# interpreter.) The chain bolas' outcome test (22 runs of 3 s, 5 minutes under the sanitizers)
+# is left to `make test` (run under the sanitizers by hand when chain_bolas.cpp changes).
+SANITIZE_SKIP ?= ^ChainBolas\.WrapsTheRoughRodSlipsOffTheSmoothOne$$
+
 sanitize-build: deps
 	@cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=Release -DCMAKE_C_COMPILER=clang \
 	  -DCMAKE_CXX_COMPILER=clang++ -DASPERITY_SANITIZE=address,undefined -DASPERITY_FUZZ=ON \
@@ -50,7 +53,7 @@ sanitize: sanitize-build
 	  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 	  LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizer/lsan.supp:print_suppressions=0 \
 	  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-	  ctest --output-on-failure -j$(JOBS) --timeout 1200
+	  ctest --output-on-failure -j$(JOBS) --timeout 1200 -E '$(SANITIZE_SKIP)'
 
 fuzz: sanitize-build
 	@tests/fuzz/run.sh $(SANITIZE_BUILD)/bin $(FUZZ_SECONDS) $(FUZZ_TARGETS)

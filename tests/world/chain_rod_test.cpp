@@ -363,7 +363,9 @@ TEST(ChainOnRod, ThrownAtItsMiddleTheChainWindsRoundTheRod) {
   Settings s;
   s.mu = 0.5;
   World world(worldSettings(s));
-  const auto [e0, e1] = build(world, rod, c);
+  const std::pair<BodyId, BodyId> ends = build(world, rod, c);
+  // Plain variables, not a structured binding: clang 14 cannot capture those in a lambda.
+  const BodyId e0 = ends.first, e1 = ends.second;
   world.body(e0).linear_velocity += rod.axis();
   world.body(e1).linear_velocity -= rod.axis();
   auto joints = [&] {
