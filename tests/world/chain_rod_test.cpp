@@ -320,24 +320,24 @@ TEST(ChainOnRod, HeavyEndsOnALightChainHoldWoundAndKeepTheirJoints) {
   EXPECT_LT(std::abs(late.drop0 - early.drop0), 0.005);
 }
 
+// The offset of p from the rod's axis, perpendicular to it.
+Vec3 radial(const Rod& rod, const Vec3& p) {
+  const Vec3 d = p - rod.centre();
+  return d - d.dot(rod.axis()) * rod.axis();
+}
+
 // Winding (SPEC 8): the signed angle the chain's joint points turn through about the rod's axis,
 // in turns, counting the segments whose two ends lie within `near` of the axis.
 double turnsAbout(const Rod& rod, const std::vector<Vec3>& points, double near) {
   const Vec3 x = Vec3::UnitX(), y = rod.up();
   double angle = 0.0;
   for (size_t i = 0; i + 1 < points.size(); ++i) {
-    const Vec3 a = points[i] - rod.centre(), b = points[i + 1] - rod.centre();
-    const Vec3 ra = a - a.dot(rod.axis()) * rod.axis(), rb = b - b.dot(rod.axis()) * rod.axis();
+    const Vec3 ra = radial(rod, points[i]), rb = radial(rod, points[i + 1]);
     if (ra.norm() > near || rb.norm() > near) continue;
     angle += std::remainder(std::atan2(rb.dot(y), rb.dot(x)) - std::atan2(ra.dot(y), ra.dot(x)),
                             2 * kPi);
   }
   return std::abs(angle) / (2 * kPi);
-}
-
-double distanceToAxis(const Rod& rod, const Vec3& p) {
-  const Vec3 d = p - rod.centre();
-  return (d - d.dot(rod.axis()) * rod.axis()).norm();
 }
 
 // Winding: the bolas' chain (2 kg ends, 23 flat links of 0.08 kg, 40 mm apart) hanging straight
@@ -383,8 +383,8 @@ TEST(ChainOnRod, ThrownAtItsMiddleTheChainWindsRoundTheRod) {
   EXPECT_GT(late, early + 1.0) << early << " turns at 0.25 s, " << late << " at 2 s";
   EXPECT_GT(late, 2.5);
   const double reach = rod.radius + 4 * 0.04;
-  EXPECT_LT(distanceToAxis(rod, world.body(e0).pose.position), reach);
-  EXPECT_LT(distanceToAxis(rod, world.body(e1).pose.position), reach);
+  EXPECT_LT(radial(rod, world.body(e0).pose.position).norm(), reach);
+  EXPECT_LT(radial(rod, world.body(e1).pose.position).norm(), reach);
 }
 
 }  // namespace
