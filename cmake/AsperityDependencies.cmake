@@ -10,6 +10,8 @@ find_package(tinyobjloader REQUIRED)
 find_package(assimp 5 REQUIRED)
 # oneTBB runs the samples of `asperity sweep` on a pool of threads.
 find_package(TBB REQUIRED)
+# zlib's CRC-32 checks every PNG chunk before stb decodes it.
+find_package(ZLIB REQUIRED)
 find_package(PkgConfig REQUIRED)
 # Bullet (single precision, as Debian builds it) for broadphase and convex contacts.
 pkg_check_modules(BULLET REQUIRED IMPORTED_TARGET bullet)

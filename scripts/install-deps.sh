@@ -8,7 +8,7 @@ packages=(
   build-essential cmake pkg-config
   # core library
   libeigen3-dev libstb-dev nlohmann-json3-dev libcli11-dev libbullet-dev
-  libmeshoptimizer-dev libtinyobjloader-dev
+  libmeshoptimizer-dev libtinyobjloader-dev zlib1g-dev
   # meshes and their materials from glTF, FBX, COLLADA and 3DS files
   libassimp-dev
   # ensembles of runs on a pool of threads
