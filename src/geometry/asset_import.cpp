@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <assimp/Importer.hpp>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -92,7 +93,24 @@ std::vector<uint8_t> textureBytes(const aiScene& scene, const std::string& ref,
   return detail::readAssetFile(detail::resolveBeside(asset_dir, ref), asset, name);
 }
 
-// The normal texture of `m` (SPEC 10): uv set, glTF scale, decoded with hygiene.
+// glTF's KHR_texture_transform as an affine map of uvs in the mesh's v-up convention. assimp
+// (5.2) stores the extension's offset converted for its v flip and its rotation about the
+// image centre; this undoes that conversion to get the extension's own offset o, rotation r
+// and scale s, then expresses uv' = T(o) R(r) S(s) uv (glTF, v down) with v' = 1 - v.
+Eigen::Matrix<double, 2, 3> gltfUvTransform(const aiUVTransform& t) {
+  const double sx = t.mScaling.x, sy = t.mScaling.y, r = -static_cast<double>(t.mRotation);
+  const double c = std::cos(r), s = std::sin(r);
+  const double ox = t.mTranslation.x - 0.5 * sx * (1 - c + s);
+  const double oy = 1 - sy - t.mTranslation.y + 0.5 * sy * (s + c - 1);
+  // glTF: u' = c sx u + s sy vg + ox, vg' = -s sx u + c sy vg + oy, with vg = 1 - v.
+  Eigen::Matrix<double, 2, 3> m;
+  m << c * sx, -s * sy, s * sy + ox,  //
+      s * sx, c * sy, 1 - c * sy - oy;
+  return m;
+}
+
+// The normal texture of `m` (SPEC 10): uv set, glTF scale and texture transform, decoded with
+// hygiene.
 void readNormalTexture(const aiScene& scene, const aiMaterial& m, const detail::Source& src,
                        const AssetImportOptions& options, AssetMaterial& out) {
   aiString ref;
@@ -103,6 +121,10 @@ void readNormalTexture(const aiScene& scene, const aiMaterial& m, const detail::
   ai_real scale = 1;
   if (m.Get(AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_NORMALS, 0), scale) == AI_SUCCESS)
     out.normal_scale = static_cast<double>(scale);
+  aiUVTransform transform;
+  if (src.gltf &&
+      m.Get(AI_MATKEY_UVTRANSFORM(aiTextureType_NORMALS, 0), transform) == AI_SUCCESS)
+    out.uv_transform = gltfUvTransform(transform);
   out.has_normal_texture = true;
   if (!options.load_textures) return;
   // glTF fixes the convention; other formats take the caller's.
@@ -114,16 +136,18 @@ void readNormalTexture(const aiScene& scene, const aiMaterial& m, const detail::
       bytes, src.name, name, green, out.normal_scale, out.normal_stats));
 }
 
-// Appends one placed mesh's triangles (positions transformed and scaled, uvs of `uv_set`).
+// Whether a mesh has texture coordinates of set `uv_set`.
 bool hasUvs(const aiMesh& m, int uv_set) {
   return uv_set < AI_MAX_NUMBER_OF_TEXTURECOORDS &&
          m.HasTextureCoords(static_cast<unsigned>(uv_set));
 }
 
-// Appends one placed mesh's triangles (positions transformed and scaled, uvs of `uv_set` when
-// `keep_uvs`); a normal-mapped asset (`need_uvs`) must have them.
-void appendMesh(const Placed& p, double scale, int uv_set, bool need_uvs, bool keep_uvs,
+// Appends one placed mesh's triangles (positions transformed and scaled, the material's uvs,
+// transformed, when `keep_uvs`); a normal-mapped asset must have them.
+void appendMesh(const Placed& p, double scale, const AssetMaterial& material, bool keep_uvs,
                 const std::string& asset, TriangleMeshData& out) {
+  const int uv_set = material.uv_set;
+  const bool need_uvs = material.has_normal_texture;
   const aiMesh& m = *p.mesh;
   const std::string which = "mesh '" + std::string(m.mName.C_Str()) + "'";
   // Points and lines cannot touch anything.
@@ -138,7 +162,7 @@ void appendMesh(const Placed& p, double scale, int uv_set, bool need_uvs, bool k
     out.vertices.emplace_back(scale * q.x, scale * q.y, scale * q.z);
     if (keep_uvs) {
       const aiVector3D& t = m.mTextureCoords[uv_set][v];
-      out.uvs.emplace_back(t.x, t.y);
+      out.uvs.push_back(material.uv_transform * Vec3(t.x, t.y, 1.0));
     }
   }
   for (unsigned f = 0; f < m.mNumFaces; ++f) {
@@ -170,14 +194,13 @@ ImportedAsset convert(const aiScene& scene, const detail::Source& src,
   }
   // UVs are kept when every chosen mesh has them (a scene's own normal_map follows them too).
   const int uv_set = asset.material.uv_set;
-  const bool need_uvs = asset.material.has_normal_texture;
-  const bool keep_uvs = need_uvs || std::all_of(placed.begin(), placed.end(), [&](const Placed& p) {
-                          return hasUvs(*p.mesh, uv_set);
-                        });
+  const bool keep_uvs = asset.material.has_normal_texture ||
+                        std::all_of(placed.begin(), placed.end(),
+                                    [&](const Placed& p) { return hasUvs(*p.mesh, uv_set); });
   asset.mesh = std::make_shared<TriangleMeshData>();
   asset.mesh->source_file = src.name;
   for (const Placed& p : placed)
-    appendMesh(p, options.scale, uv_set, need_uvs, keep_uvs, src.name, *asset.mesh);
+    appendMesh(p, options.scale, asset.material, keep_uvs, src.name, *asset.mesh);
   if (asset.mesh->triangles.empty()) throw Error(src.name + ": the chosen meshes have no faces");
   return asset;
 }

@@ -14,12 +14,15 @@ namespace asperity::detail {
 
 namespace {
 
-// The first material the faces use that names a normal map (`norm`, else a bump map, which
-// obj2gltf and most exporters fill with a tangent-space normal map), else the first used one.
-const tinyobj::material_t* pickMaterial(const tinyobj::ObjReader& reader) {
+// The first material the faces (of objects named `object`, when given) use that names a normal
+// map (`norm`, else a bump map, which obj2gltf and most exporters fill with a tangent-space
+// normal map), else the first used one.
+const tinyobj::material_t* pickMaterial(const tinyobj::ObjReader& reader,
+                                        const std::string& object) {
   const auto& materials = reader.GetMaterials();
   const tinyobj::material_t* first = nullptr;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    if (!object.empty() && shape.name != object) continue;
     for (const int id : shape.mesh.material_ids) {
       if (id < 0 || static_cast<size_t>(id) >= materials.size()) continue;
       const tinyobj::material_t& m = materials[static_cast<size_t>(id)];
@@ -88,18 +91,16 @@ NormalMap decodeAssetNormalMap(const std::vector<uint8_t>& bytes, const std::str
 }
 
 ImportedAsset importObj(const std::string& path, const AssetImportOptions& options) {
-  // Geometry exactly as before; the node key picks nothing in OBJ files.
-  if (!options.node.empty())
-    throw Error(path + ": \"node\" is not supported for OBJ files (one mesh per file)");
+  // Geometry exactly as loadObjMesh gives it; `node` names an object or group (`o` / `g`).
   ImportedAsset asset;
-  asset.mesh = loadObjMesh(path, options.scale);
+  asset.mesh = loadObjMesh(path, options.scale, options.node);
   // The MTL beside it; a missing MTL only means no material.
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
   config.mtl_search_path = std::filesystem::path(path).parent_path().string();
   tinyobj::ObjReader reader;
   if (!reader.ParseFromFile(path, config)) return asset;
-  if (const tinyobj::material_t* m = pickMaterial(reader))
+  if (const tinyobj::material_t* m = pickMaterial(reader, options.node))
     asset.material = readMaterial(*m, path, options);
   if (asset.material.has_normal_texture && asset.mesh->uvs.empty())
     throw Error(path + ": the mesh has no texture coordinates (vt) for its normal map");

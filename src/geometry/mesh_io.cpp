@@ -72,7 +72,8 @@ void dropFins(TriangleMeshData& mesh) {
 
 }  // namespace
 
-std::shared_ptr<TriangleMeshData> loadObjMesh(const std::string& path, double scale) {
+std::shared_ptr<TriangleMeshData> loadObjMesh(const std::string& path, double scale,
+                                              const std::string& object) {
   if (!(scale > 0)) throw Error(path + ": mesh scale must be positive");
   // Parse, triangulating polygons; no materials are needed.
   tinyobj::ObjReaderConfig config;
@@ -90,7 +91,10 @@ std::shared_ptr<TriangleMeshData> loadObjMesh(const std::string& path, double sc
   auto mesh = std::make_shared<TriangleMeshData>();
   mesh->source_file = path;
   std::map<std::pair<int, int>, int> seen;
+  bool named = false;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    if (!object.empty() && shape.name != object) continue;
+    named = true;
     const auto& indices = shape.mesh.indices;
     size_t offset = 0;
     for (const unsigned char corners : shape.mesh.num_face_vertices) {
@@ -103,6 +107,8 @@ std::shared_ptr<TriangleMeshData> loadObjMesh(const std::string& path, double sc
       offset += 3;
     }
   }
+  if (!object.empty() && !named)
+    throw Error(path + ": no object or group is named '" + object + "'");
   if (mesh->triangles.empty()) throw Error(path + ": OBJ mesh has no faces");
   return mesh;
 }

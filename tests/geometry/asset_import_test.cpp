@@ -54,6 +54,35 @@ TEST(AssetImport, GltfPlateBringsItsNormalMapAndBaseColour) {
   }
 }
 
+TEST(AssetImport, GltfTextureTransformIsAppliedToTheUvs) {
+  // KHR_texture_transform on normalTexture: offset (0.25, 0.5), rotation 0.3, scale (2, 3).
+  // The extension's rule in glTF's own uvs (v down): uv' = T(offset) R(rotation) S(scale) uv.
+  const double c = std::cos(0.3), s = std::sin(0.3);
+  auto expected = [&](double u, double vg) {
+    const double u2 = c * 2 * u + s * 3 * vg + 0.25, vg2 = -s * 2 * u + c * 3 * vg + 0.5;
+    return Vec2(u2, 1 - vg2);  // the mesh keeps v up
+  };
+  const ImportedAsset a = importAsset(fixture("plate_texture_transform.gltf"));
+  ASSERT_EQ(a.mesh->uvs.size(), 4u);
+  // The plate's corners and their uvs in the file.
+  const std::pair<Vec3, Vec2> corners[] = {{Vec3(-0.1, -0.1, 0), Vec2(0, 1)},
+                                           {Vec3(0.1, -0.1, 0), Vec2(1, 1)},
+                                           {Vec3(0.1, 0.1, 0), Vec2(1, 0)},
+                                           {Vec3(-0.1, 0.1, 0), Vec2(0, 0)}};
+  int matched = 0;
+  for (size_t v = 0; v < a.mesh->vertices.size(); ++v)
+    for (const auto& corner : corners)
+      if (a.mesh->vertices[v].isApprox(corner.first, 1e-6)) {
+        const Vec2 want = expected(corner.second.x(), corner.second.y());
+        EXPECT_TRUE(a.mesh->uvs[v].isApprox(want, 1e-5))
+            << a.mesh->uvs[v].transpose() << " want " << want.transpose();
+        ++matched;
+      }
+  EXPECT_EQ(matched, 4);
+  // Without the extension the uvs are the file's.
+  EXPECT_TRUE(importAsset(fixture("plate.gltf")).material.uv_transform.isIdentity());
+}
+
 TEST(AssetImport, DataUriImageMatchesTheExternalFile) {
   const ImportedAsset file = importAsset(fixture("plate.gltf"));
   const ImportedAsset uri = importAsset(fixture("plate_data_uri.gltf"));
@@ -90,6 +119,26 @@ TEST(AssetImport, NodeKeyPicksByNameAndRejectsUnknownNames) {
   options.node = "lid";
   EXPECT_NE(importError(fixture("plate.gltf"), options).find("no node or mesh is named 'lid'"),
             std::string::npos);
+}
+
+TEST(AssetImport, NodeKeyPicksAnObjObjectWithItsMaterial) {
+  AssetImportOptions options;
+  options.node = "lid";
+  const ImportedAsset lid = importAsset(fixture("two_objects.obj"), options);
+  ASSERT_EQ(lid.mesh->triangles.size(), 2u);
+  for (const Vec3& v : lid.mesh->vertices) EXPECT_EQ(v.z(), 1.0);
+  EXPECT_TRUE(lid.material.normal_map);
+  options.node = "base";
+  const ImportedAsset base = importAsset(fixture("two_objects.obj"), options);
+  for (const Vec3& v : base.mesh->vertices) EXPECT_EQ(v.z(), 0.0);
+  EXPECT_FALSE(base.material.has_normal_texture);
+  EXPECT_NEAR(base.material.base_color.z(), 0.9, 1e-6);
+  // Both by default; an unknown name is an error naming the file.
+  EXPECT_EQ(importAsset(fixture("two_objects.obj")).mesh->triangles.size(), 4u);
+  options.node = "handle";
+  const std::string error = importError(fixture("two_objects.obj"), options);
+  EXPECT_NE(error.find("two_objects.obj: no object or group is named 'handle'"), std::string::npos)
+      << error;
 }
 
 TEST(AssetImport, ScaleMultipliesPositions) {

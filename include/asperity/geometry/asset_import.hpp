@@ -33,6 +33,9 @@ struct AssetMaterial {
   NormalMapStats normal_stats;                  // invalid texels found while decoding
   double normal_scale = 1.0;                    // glTF normalTexture.scale, MTL -bm
   int uv_set = 0;                               // texture coordinate set the map uses
+  // glTF KHR_texture_transform of the normal texture, already applied to the mesh's uvs
+  // (v up): uv' = uv_transform * (u, v, 1). Identity when the file has none.
+  Eigen::Matrix<double, 2, 3> uv_transform = Eigen::Matrix<double, 2, 3>::Identity();
   bool has_base_color = false;
   Vec3 base_color = Vec3(0.7, 0.7, 0.7);  // linear RGB factor (glTF baseColorFactor, MTL Kd)
   std::string base_color_texture;         // its file name; empty when none

@@ -13,7 +13,9 @@ namespace asperity {
 // per vertex: an OBJ vertex used with two different UVs becomes two vertices. `uvs` is empty
 // when the file has no texture coordinates. Throws Error naming the file when it is missing,
 // malformed, has an index out of range or has no faces.
-std::shared_ptr<TriangleMeshData> loadObjMesh(const std::string& path, double scale = 1.0);
+// `object` keeps only the OBJ objects or groups (`o` / `g`) of that name; empty keeps all.
+std::shared_ptr<TriangleMeshData> loadObjMesh(const std::string& path, double scale = 1.0,
+                                              const std::string& object = "");
 
 // A simplified copy with at most `target_triangles` triangles (meshoptimizer's edge-collapse
 // simplifier, then its sloppy one if that cannot get there), unused vertices removed, UVs
