@@ -60,8 +60,27 @@ const aiMaterial* pickMaterial(const aiScene& scene, const std::vector<Placed>& 
   return first;
 }
 
-// glTF's base colour factor, else the diffuse colour; the base colour texture's name.
-void readBaseColor(const aiMaterial& m, AssetMaterial& out) {
+// A texture's bytes: embedded ("*N", .glb, data URI) or a file beside the asset; `name` is the
+// part named in errors.
+std::vector<uint8_t> textureBytes(const aiScene& scene, const std::string& ref,
+                                  const std::string& asset_dir, const std::string& asset,
+                                  const std::string& name) {
+  if (const aiTexture* t = scene.GetEmbeddedTexture(ref.c_str())) {
+    // mHeight == 0: compressed bytes (PNG, JPEG) of mWidth bytes.
+    if (t->mHeight != 0)
+      throw Error(asset + ": " + name + " is stored uncompressed; only PNG or JPEG is read");
+    const auto* p = reinterpret_cast<const uint8_t*>(t->pcData);
+    return std::vector<uint8_t>(p, p + t->mWidth);
+  }
+  if (asset_dir.empty() && !std::filesystem::path(ref).is_absolute())
+    throw Error(asset + ": " + name + " is a separate file, which cannot be read from memory");
+  return detail::readAssetFile(detail::resolveBeside(asset_dir, ref), asset, name);
+}
+
+// glTF's base colour factor, else the diffuse colour; the base colour texture, decoded when
+// textures are loaded.
+void readBaseColor(const aiScene& scene, const aiMaterial& m, const detail::Source& src,
+                   const AssetImportOptions& options, AssetMaterial& out) {
   aiColor4D c;
   if (m.Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS ||
       m.Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS) {
@@ -73,24 +92,10 @@ void readBaseColor(const aiMaterial& m, AssetMaterial& out) {
   if (m.GetTexture(AI_MATKEY_BASE_COLOR_TEXTURE, &tex) == AI_SUCCESS ||
       m.GetTexture(aiTextureType_DIFFUSE, 0, &tex) == AI_SUCCESS)
     out.base_color_texture = tex.C_Str();
-}
-
-// The normal texture's bytes: embedded ("*N", .glb, data URI) or a file beside the asset.
-std::vector<uint8_t> textureBytes(const aiScene& scene, const std::string& ref,
-                                  const std::string& asset_dir, const std::string& asset,
-                                  std::string& name) {
-  if (const aiTexture* t = scene.GetEmbeddedTexture(ref.c_str())) {
-    name = "embedded texture '" + ref + "'";
-    // mHeight == 0: compressed bytes (PNG, JPEG) of mWidth bytes.
-    if (t->mHeight != 0)
-      throw Error(asset + ": " + name + " is stored uncompressed; only PNG or JPEG is read");
-    const auto* p = reinterpret_cast<const uint8_t*>(t->pcData);
-    return std::vector<uint8_t>(p, p + t->mWidth);
-  }
-  name = "image '" + ref + "'";
-  if (asset_dir.empty() && !std::filesystem::path(ref).is_absolute())
-    throw Error(asset + ": " + name + " is a separate file, which cannot be read from memory");
-  return detail::readAssetFile(detail::resolveBeside(asset_dir, ref), asset, name);
+  if (out.base_color_texture.empty() || !options.load_textures) return;
+  const std::string part = "base colour image '" + out.base_color_texture + "'";
+  out.base_color_image = detail::decodeAssetColorImage(
+      textureBytes(scene, out.base_color_texture, src.dir, src.name, part), src.name, part);
 }
 
 // glTF's KHR_texture_transform as an affine map of uvs in the mesh's v-up convention. assimp
@@ -122,14 +127,15 @@ void readNormalTexture(const aiScene& scene, const aiMaterial& m, const detail::
   if (m.Get(AI_MATKEY_GLTF_TEXTURE_SCALE(aiTextureType_NORMALS, 0), scale) == AI_SUCCESS)
     out.normal_scale = static_cast<double>(scale);
   aiUVTransform transform;
-  if (src.gltf &&
-      m.Get(AI_MATKEY_UVTRANSFORM(aiTextureType_NORMALS, 0), transform) == AI_SUCCESS)
+  if (src.gltf && m.Get(AI_MATKEY_UVTRANSFORM(aiTextureType_NORMALS, 0), transform) == AI_SUCCESS)
     out.uv_transform = gltfUvTransform(transform);
   out.has_normal_texture = true;
   if (!options.load_textures) return;
   // glTF fixes the convention; other formats take the caller's.
   const GreenConvention green = src.gltf ? GreenConvention::OpenGL : options.green;
-  std::string name;
+  const std::string name =
+      (scene.GetEmbeddedTexture(ref.C_Str()) ? "embedded texture '" : "image '") +
+      std::string(ref.C_Str()) + "'";
   const std::vector<uint8_t> bytes = textureBytes(scene, ref.C_Str(), src.dir, src.name, name);
   out.normal_map_name = name;
   out.normal_map = std::make_shared<const NormalMap>(detail::decodeAssetNormalMap(
@@ -189,7 +195,7 @@ ImportedAsset convert(const aiScene& scene, const detail::Source& src,
   // Material first: its normal map decides which UV set the mesh keeps.
   ImportedAsset asset;
   if (const aiMaterial* m = pickMaterial(scene, placed)) {
-    readBaseColor(*m, asset.material);
+    readBaseColor(scene, *m, src, options, asset.material);
     readNormalTexture(scene, *m, src, options, asset.material);
   }
   // UVs are kept when every chosen mesh has them (a scene's own normal_map follows them too).
@@ -202,6 +208,7 @@ ImportedAsset convert(const aiScene& scene, const detail::Source& src,
   for (const Placed& p : placed)
     appendMesh(p, options.scale, asset.material, keep_uvs, src.name, *asset.mesh);
   if (asset.mesh->triangles.empty()) throw Error(src.name + ": the chosen meshes have no faces");
+  asset.display_mesh = asset.mesh;
   return asset;
 }
 

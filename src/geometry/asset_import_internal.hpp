@@ -29,6 +29,11 @@ NormalMap decodeAssetNormalMap(const std::vector<uint8_t>& bytes, const std::str
                                const std::string& part, GreenConvention green, double scale,
                                NormalMapStats& stats);
 
+// Decodes a base colour texture for display, errors naming asset and part.
+std::shared_ptr<const ColorImage> decodeAssetColorImage(const std::vector<uint8_t>& bytes,
+                                                        const std::string& asset,
+                                                        const std::string& part);
+
 // OBJ + MTL through tinyobjloader: geometry exactly as loadObjMesh, material from the MTL's
 // `norm` (else `map_Bump` / `bump`, with -bm) and Kd / map_Kd.
 ImportedAsset importObj(const std::string& path, const AssetImportOptions& options);

@@ -40,6 +40,12 @@ AssetMaterial readMaterial(const tinyobj::material_t& m, const std::string& path
   out.has_base_color = true;
   out.base_color = Vec3(m.diffuse[0], m.diffuse[1], m.diffuse[2]).cwiseMax(0.0).cwiseMin(1.0);
   out.base_color_texture = m.diffuse_texname;
+  const std::string dir = std::filesystem::path(path).parent_path().string();
+  if (options.load_textures && !m.diffuse_texname.empty()) {
+    const std::string part = "base colour image '" + m.diffuse_texname + "'";
+    out.base_color_image = decodeAssetColorImage(
+        readAssetFile(resolveBeside(dir, m.diffuse_texname), path, part), path, part);
+  }
   // `norm` first; `map_Bump` / `bump` with its -bm multiplier otherwise.
   const bool norm = !m.normal_texname.empty();
   const std::string ref = norm ? m.normal_texname : m.bump_texname;
@@ -49,7 +55,6 @@ AssetMaterial readMaterial(const tinyobj::material_t& m, const std::string& path
       static_cast<double>(norm ? m.normal_texopt.bump_multiplier : m.bump_texopt.bump_multiplier);
   if (!options.load_textures) return out;
   const std::string part = "image '" + ref + "'";
-  const std::string dir = std::filesystem::path(path).parent_path().string();
   const std::vector<uint8_t> bytes = readAssetFile(resolveBeside(dir, ref), path, part);
   out.normal_map_name = part;
   out.normal_map = std::make_shared<const NormalMap>(
@@ -90,6 +95,16 @@ NormalMap decodeAssetNormalMap(const std::vector<uint8_t>& bytes, const std::str
   return map;
 }
 
+std::shared_ptr<const ColorImage> decodeAssetColorImage(const std::vector<uint8_t>& bytes,
+                                                        const std::string& asset,
+                                                        const std::string& part) {
+  try {
+    return std::make_shared<const ColorImage>(decodeColorImage(bytes, part));
+  } catch (const Error& e) {
+    throw Error(asset + ": " + e.what());
+  }
+}
+
 ImportedAsset importObj(const std::string& path, const AssetImportOptions& options) {
   // Geometry exactly as loadObjMesh gives it; `node` names an object or group (`o` / `g`).
   ImportedAsset asset;
@@ -104,6 +119,7 @@ ImportedAsset importObj(const std::string& path, const AssetImportOptions& optio
     asset.material = readMaterial(*m, path, options);
   if (asset.material.has_normal_texture && asset.mesh->uvs.empty())
     throw Error(path + ": the mesh has no texture coordinates (vt) for its normal map");
+  asset.display_mesh = asset.mesh;
   return asset;
 }
 

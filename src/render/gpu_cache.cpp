@@ -49,6 +49,18 @@ void uploadMesh(const ShapeMesh& mesh, GpuMesh& gpu) {
   gpu.index_count = static_cast<GLsizei>(indices.size());
 }
 
+// Mipmaps, repeat, trilinear and (where available) anisotropic filtering for the bound texture.
+void setSampling() {
+  glGenerateMipmap(GL_TEXTURE_2D);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  // Anisotropic filtering keeps grazing views of rough ground sharp.
+  if (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))
+    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 4.0f);
+}
+
 }  // namespace
 
 const GpuMesh& MeshCache::get(const std::shared_ptr<const ShapeMesh>& mesh) {
@@ -66,12 +78,19 @@ void MeshCache::prune() {
   std::erase_if(entries_, [](const auto& e) { return e.second.source.expired(); });
 }
 
-GLuint TextureCache::get(const std::shared_ptr<const NormalMap>& map) {
-  auto it = entries_.find(map.get());
-  if (it != entries_.end() && it->second.source.lock() == map) return it->second.texture;
+std::pair<TextureCache::Entry*, bool> TextureCache::slot(
+    const std::shared_ptr<const void>& source) {
+  auto it = entries_.find(source.get());
+  if (it != entries_.end() && it->second.source.lock() == source) return {&it->second, false};
   if (it != entries_.end()) entries_.erase(it);
-  Entry& entry = entries_[map.get()];
-  entry.source = map;
+  Entry& entry = entries_[source.get()];
+  entry.source = source;
+  return {&entry, true};
+}
+
+GLuint TextureCache::get(const std::shared_ptr<const NormalMap>& map) {
+  auto [entry, upload] = slot(map);
+  if (!upload) return entry->texture;
   // Unit vectors packed as 0.5 m + 0.5 in RGBA8 (what 8-bit PNG maps hold; the fastest format
   // to filter on software rasterisers); mipmaps average them, the shader renormalises.
   std::vector<uint8_t> packed;
@@ -82,20 +101,25 @@ GLuint TextureCache::get(const std::shared_ptr<const NormalMap>& map) {
           static_cast<uint8_t>(std::lround(std::clamp(127.5f * (m[c] + 1.0f), 0.0f, 255.0f))));
     packed.push_back(255);
   }
-  glBindTexture(GL_TEXTURE_2D, entry.texture);
+  glBindTexture(GL_TEXTURE_2D, entry->texture);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, map->width(), map->height(), 0, GL_RGBA,
                GL_UNSIGNED_BYTE, packed.data());
-  glGenerateMipmap(GL_TEXTURE_2D);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  // Anisotropic filtering keeps grazing views of rough ground sharp.
-  if (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))
-    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 4.0f);
+  setSampling();
   glBindTexture(GL_TEXTURE_2D, 0);
-  return entry.texture;
+  return entry->texture;
+}
+
+GLuint TextureCache::get(const std::shared_ptr<const ColorImage>& image) {
+  auto [entry, upload] = slot(image);
+  if (!upload) return entry->texture;
+  glBindTexture(GL_TEXTURE_2D, entry->texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, image->width, image->height, 0, GL_RGBA,
+               GL_UNSIGNED_BYTE, image->rgba.data());
+  setSampling();
+  glBindTexture(GL_TEXTURE_2D, 0);
+  return entry->texture;
 }
 
 void TextureCache::prune() {

@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "asperity/geometry/shape_mesh.hpp"
+#include "asperity/texture/color_image.hpp"
 #include "asperity/texture/normal_map.hpp"
 #include "gl/objects.hpp"
 
@@ -36,14 +37,18 @@ class TextureCache {
  public:
   // A mipmapped, repeating RGBA8 texture of 0.5 m + 0.5 (rows bottom-up as stored).
   GLuint get(const std::shared_ptr<const NormalMap>& map);
+  // A mipmapped, repeating sRGB texture (sampling returns linear colour).
+  GLuint get(const std::shared_ptr<const ColorImage>& image);
   void prune();
 
  private:
   struct Entry {
-    std::weak_ptr<const NormalMap> source;
+    std::weak_ptr<const void> source;
     gl::Texture texture;
   };
-  std::unordered_map<const NormalMap*, Entry> entries_;
+  // The entry for `source`, and whether it still has to be uploaded.
+  std::pair<Entry*, bool> slot(const std::shared_ptr<const void>& source);
+  std::unordered_map<const void*, Entry> entries_;
 };
 
 }  // namespace asperity::render

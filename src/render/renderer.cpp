@@ -47,14 +47,16 @@ Eigen::AlignedBox3d casterBounds(const RenderScene& scene) {
   return box;
 }
 
-// The mesh shader variant for one surface: normal map, ground grid, shadows, PCF taps.
+// The mesh shader variant for one surface: normal map, ground grid, shadows, PCF taps, base
+// colour texture.
 std::string meshFragmentSource(int variant) {
   const auto define = [](const char* name, int value) {
     return "#define " + std::string(name) + " " + std::to_string(value) + "\n";
   };
   return "#version 430 core\n" + define("NORMAL_MAP", variant & 1) +
          define("GROUND", (variant >> 1) & 1) + define("SHADOWS", (variant >> 2) & 1) +
-         define("SHADOW_TAPS", (variant & 8) != 0 ? 4 : 1) + shaders::kMeshFragmentBody;
+         define("SHADOW_TAPS", (variant & 8) != 0 ? 4 : 1) +
+         define("BASE_COLOR_MAP", (variant >> 4) & 1) + shaders::kMeshFragmentBody;
 }
 
 // What the camera and the light look at: the focus bounds, else every item's.
@@ -77,9 +79,10 @@ Eigen::AlignedBox3d itemBounds(const RenderItem& item) {
 }
 
 struct Renderer::Impl {
-  // Mesh programs by variant (bit 0 normal map, 1 ground, 2 shadows, 3 four PCF taps), compiled
+  // Mesh programs by variant (bit 0 normal map, 1 ground, 2 shadows, 3 four PCF taps, 4 base
+  // colour texture), compiled
   // on first use.
-  std::array<std::unique_ptr<gl::Program>, 16> mesh_variants;
+  std::array<std::unique_ptr<gl::Program>, 32> mesh_variants;
   gl::Program shadow{
       "renderer/shadow",
       {{GL_VERTEX_SHADER, shaders::kShadowVertex}, {GL_FRAGMENT_SHADER, shaders::kShadowFragment}}};
@@ -262,6 +265,7 @@ void Renderer::Impl::setFrameUniforms(const gl::Program& program, const Camera& 
   program.set("u_shadow_texel", shadow_size > 0 ? 1.0f / static_cast<float>(shadow_size) : 0.0f);
   program.set("u_normal_map", 0);
   program.set("u_shadow_map", 1);
+  program.set("u_base_color_map", 2);
 }
 
 void Renderer::Impl::drawMeshes(const RenderScene& scene, const Camera& camera,
@@ -285,7 +289,9 @@ void Renderer::Impl::drawMeshes(const RenderScene& scene, const Camera& camera,
     const RenderItem& item = *pointer;
     const GpuMesh& gpu = meshes.get(item.mesh);
     const bool mapped = o.normal_maps && item.normal_map && !item.normal_map->empty();
-    const int variant = (mapped ? 1 : 0) | (item.ground ? 2 : 0) | shadow_bits;
+    const bool coloured = item.base_color_texture && !item.base_color_texture->empty();
+    const int variant =
+        (mapped ? 1 : 0) | (item.ground ? 2 : 0) | shadow_bits | (coloured ? 16 : 0);
     const gl::Program& mesh = meshProgram(variant);
     if ((prepared & (1u << variant)) == 0) {
       setFrameUniforms(mesh, camera, o, light_vp, view_proj, fog_start);
@@ -294,6 +300,8 @@ void Renderer::Impl::drawMeshes(const RenderScene& scene, const Camera& camera,
     mesh.use();
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, mapped ? textures.get(item.normal_map) : 0);
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, coloured ? textures.get(item.base_color_texture) : 0);
     mesh.set("u_model", modelMatrix(item.pose));
     mesh.set("u_base_color", Vec3f(item.base_color.cast<float>()));
     mesh.set("u_highlight", item.highlight ? 1 : 0);

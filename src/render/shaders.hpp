@@ -47,6 +47,7 @@ in vec3 v_bitangent;
 in vec2 v_uv;
 in vec4 v_light;
 uniform sampler2D u_normal_map;
+uniform sampler2D u_base_color_map;
 uniform sampler2DShadow u_shadow_map;
 uniform int u_highlight;
 uniform float u_shadow_texel;
@@ -108,6 +109,9 @@ void main() {
   // Key light (Blinn-Phong) plus a sky/ground hemisphere ambient; the ground's grid darkens
   // its albedo (lines every u_grid_step, darker every 10).
   vec3 albedo = u_base_color;
+#if BASE_COLOR_MAP
+  albedo *= texture(u_base_color_map, v_uv).rgb;  // sRGB texture: already linear here
+#endif
 #if GROUND
   vec2 g = v_world.xy / u_grid_step;
   vec2 w = fwidth(g);

@@ -60,7 +60,15 @@ std::shared_ptr<const ShapeMesh> WorldView::meshFor(const World& world, BodyId b
     mesh_options.plane_centre =
         s.local.applyInverse(world.bodies()[body].pose.applyInverse(ground_centre_));
   }
-  slot = std::make_shared<const ShapeMesh>(buildShapeMesh(s, mesh_options));
+  // An asset shows its full mesh, whatever hull or simplified mesh it collides with.
+  if (s.display_mesh) {
+    Shape shown = s;
+    shown.type = ShapeType::TriangleMesh;
+    shown.mesh = s.display_mesh;
+    slot = std::make_shared<const ShapeMesh>(buildShapeMesh(shown, mesh_options));
+  } else {
+    slot = std::make_shared<const ShapeMesh>(buildShapeMesh(s, mesh_options));
+  }
   return slot;
 }
 
@@ -95,6 +103,7 @@ void WorldView::update(const World& world, const WorldViewOptions& options, Rend
       item.pose = shapePose(bodies[id], shape);
       item.normal_map = shape.surface.normal_map;
       item.base_color = shape.surface.base_color;
+      item.base_color_texture = shape.surface.base_color_texture;
       item.ground = shape.type == ShapeType::Plane;
       item.highlight = id == options.highlight;
       item.id = id;

@@ -170,6 +170,12 @@ Shape parseShape(JsonReader r, SceneDesc& scene, size_t body, size_t shape) {
   s.local.rotation = orientation(r);
   s.density = r.number("density", s.density, Range::positive(1e6));
   parseGeometry(r, s, scene, body, shape);
+  // An asset's own base colour shows unless the surface names one.
+  const bool names_color = r.has("surface") && r.value().at("surface").is_object() &&
+                           r.value().at("surface").contains("base_color");
+  if (!scene.meshes.empty() && scene.meshes.back().body == body &&
+      scene.meshes.back().shape == shape)
+    scene.meshes.back().asset_base_color = !names_color;
   s.surface = parseSurface(r.object("surface"), scene.base_dir);
   r.finish();
   return s;

@@ -115,10 +115,14 @@ BodyDesc resolveMeshes(const SceneDesc& scene, size_t index, scene::ResourceCach
     const auto asset =
         withContext(scene, ptr, [&] { return cache.asset(m, shape.surface.source.green); });
     shape.mesh = asset->mesh;
-    // The asset's own normal map when the surface names none (SPEC 10).
+    shape.display_mesh = asset->display_mesh;
+    // The asset's own normal map when the surface names none (SPEC 10), and its base colour.
     Surface& s = shape.surface;
     if (!s.normal_map && s.source.normal_map_file.empty() && s.source.generator.name.empty())
       s.normal_map = asset->material.normal_map;
+    if (m.asset_base_color && asset->material.has_base_color)
+      s.base_color = asset->material.base_color;
+    if (m.asset_base_color) s.base_color_texture = asset->material.base_color_image;
   }
   return desc;
 }

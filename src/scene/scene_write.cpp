@@ -121,6 +121,9 @@ json shapeToJson(const SceneDesc& scene, size_t body, size_t index) {
       break;
   }
   out["surface"] = surfaceToJson(s.surface);
+  // A surface that showed its asset's base colour keeps doing so.
+  const SceneMesh* m = meshSource(scene, body, index);
+  if (m && m->asset_base_color) out["surface"].erase("base_color");
   return out;
 }
 

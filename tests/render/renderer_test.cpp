@@ -64,6 +64,31 @@ TEST(Renderer, ImageIsLitAndNotBlank) {
   EXPECT_GT(int(centre[0]), int(centre[2]) + 30);
 }
 
+TEST(Renderer, BaseColourTextureTintsTheSurface) {
+  // The cube in white, then with a green and a blue 2 x 2 colour texture (sRGB bytes).
+  auto textured = [](uint8_t r, uint8_t g, uint8_t b) {
+    render::RenderScene scene = groundAndCube(nullptr);
+    scene.items[1].base_color = Vec3(1, 1, 1);
+    std::vector<uint8_t> rgba;
+    for (int k = 0; k < 4; ++k) rgba.insert(rgba.end(), {r, g, b, 255});
+    scene.items[1].base_color_texture =
+        std::make_shared<const ColorImage>(ColorImage{2, 2, std::move(rgba)});
+    return scene;
+  };
+  const render::RenderScene green = textured(20, 220, 30);
+  const render::Camera camera = cameraFor(green);
+  const uint8_t* g = draw(green, camera).pixel(kWidth / 2, kHeight / 2);
+  EXPECT_GT(int(g[1]), int(g[0]) + 60);
+  EXPECT_GT(int(g[1]), int(g[2]) + 60);
+  const uint8_t* b = draw(textured(20, 30, 220), camera).pixel(kWidth / 2, kHeight / 2);
+  EXPECT_GT(int(b[2]), int(b[0]) + 60);
+  // A white texture is the untextured surface.
+  render::RenderScene plain = groundAndCube(nullptr);
+  plain.items[1].base_color = Vec3(1, 1, 1);
+  EXPECT_LT(test::meanAbsDifference(draw(plain, camera), draw(textured(255, 255, 255), camera)),
+            0.5);
+}
+
 TEST(Renderer, FlatNormalMapMatchesNoNormalMapAndRoughOneDiffers) {
   const render::RenderScene none = groundAndCube(nullptr);
   const render::RenderScene flat = groundAndCube(std::make_shared<const NormalMap>(16, 16));

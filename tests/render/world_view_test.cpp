@@ -45,6 +45,39 @@ TEST(WorldView, OneItemPerShapeWithSurfaceColourAndGround) {
   EXPECT_TRUE(test::near(scene.focus.sizes().x(), 0.2, 1e-3));
 }
 
+TEST(WorldView, AHullDrawsItsAssetsFullMeshAndColourTexture) {
+  // A tetrahedron hull standing in for a simplified asset, whose display mesh is a finer one.
+  auto hull = std::make_shared<TriangleMeshData>();
+  hull->vertices = {Vec3(0, 0, 0), Vec3(0.1, 0, 0), Vec3(0, 0.1, 0), Vec3(0, 0, 0.1)};
+  auto shown = std::make_shared<TriangleMeshData>();
+  for (int k = 0; k < 20; ++k) {  // a strip of 20 triangles
+    shown->vertices.push_back(Vec3(0.005 * k, 0, 0));
+    shown->vertices.push_back(Vec3(0.005 * k, 0.05, 0.05));
+  }
+  for (int k = 0; k + 2 < 40; k += 2) {
+    shown->triangles.push_back({k, k + 2, k + 1});
+    shown->triangles.push_back({k + 1, k + 2, k + 3});
+  }
+  World world;
+  BodyDesc rock;
+  rock.name = "rock";
+  Shape shape;
+  shape.type = ShapeType::ConvexHull;
+  shape.mesh = hull;
+  shape.display_mesh = shown;
+  shape.surface.base_color_texture =
+      std::make_shared<const ColorImage>(ColorImage{1, 1, std::vector<uint8_t>{10, 200, 30, 255}});
+  rock.shapes.push_back(shape);
+  world.createBody(rock);
+  const render::RenderScene scene = render::renderWorld(world);
+  ASSERT_EQ(scene.items.size(), 1u);
+  EXPECT_EQ(scene.items[0].mesh->triangles.size(), shown->triangles.size());
+  EXPECT_EQ(scene.items[0].base_color_texture, shape.surface.base_color_texture);
+  // Without a display mesh the hull itself is drawn (4 faces).
+  world.body(0).shapes[0].display_mesh = nullptr;
+  EXPECT_EQ(render::renderWorld(world).items[0].mesh->triangles.size(), 4u);
+}
+
 TEST(WorldView, PickFindsTheCubeFromAbove) {
   const auto world = cubeOnGround();
   render::WorldView view;

@@ -2,6 +2,8 @@
 // loads created by name, the sampler installed, and a sliding box that stops where Coulomb says.
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <fstream>
 
@@ -109,6 +111,37 @@ TEST(Instantiate, MeshesAreLoadedScaledAndSimplified) {
   for (const Vec3& v : wedge.mesh->vertices) wedge_max = std::max(wedge_max, v.norm());
   for (const Vec3& v : bump.mesh->vertices) bump_max = std::max(bump_max, v.norm());
   EXPECT_GT(bump_max, wedge_max);
+  // Collision takes the simplified hull; renderers get the bunny as loaded.
+  ASSERT_NE(bunny.display_mesh, nullptr);
+  EXPECT_GT(bunny.display_mesh->triangles.size(), 10 * bunny.mesh->triangles.size());
+}
+
+TEST(Instantiate, AnAssetsBaseColourShowsUnlessTheSurfaceNamesOne) {
+  // two_objects.obj's "lid" uses Kd 0.8 0.3 0.2 and map_Kd (an 8 x 8 PNG).
+  const std::string asset = test::sourcePath("tests/fixtures/assets/two_objects.obj");
+  auto scene_with = [&](const std::string& surface) {
+    return parseScene(nlohmann::json::parse(R"({"bodies": [{"name": "lid", "type": "static",
+        "shapes": [{"type": "mesh", "file": ")" +
+                                            asset + R"(", "node": "lid",
+        "surface": )" + surface + "}]}]}"),
+                      "scene.json");
+  };
+  const SceneDesc plain = scene_with("{}");
+  const auto world = instantiate(plain);
+  const Surface& own = surfaceOf(*world, "lid");
+  EXPECT_TRUE(own.base_color.isApprox(Vec3(0.8, 0.3, 0.2), 1e-6)) << own.base_color.transpose();
+  ASSERT_NE(own.base_color_texture, nullptr);
+  EXPECT_EQ(own.base_color_texture->width, 8);
+  EXPECT_EQ(own.base_color_texture->rgba.size(), 8u * 8u * 4u);
+  // Saved back, the surface still names no colour, so a reload shows the asset's again.
+  EXPECT_FALSE(sceneToJson(plain)["bodies"][0]["shapes"][0]["surface"].contains("base_color"));
+  // A colour in the scene wins, and the texture is then not used.
+  const SceneDesc named = scene_with(R"({"base_color": [0.1, 0.2, 0.3]})");
+  const auto world_named = instantiate(named);
+  const Surface& mine = surfaceOf(*world_named, "lid");
+  EXPECT_EQ(mine.base_color, Vec3(0.1, 0.2, 0.3));
+  EXPECT_EQ(mine.base_color_texture, nullptr);
+  EXPECT_TRUE(sceneToJson(named)["bodies"][0]["shapes"][0]["surface"].contains("base_color"));
 }
 
 TEST(Instantiate, NamesBecomeIds) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "asperity/geometry/shape.hpp"
+#include "asperity/texture/color_image.hpp"
 #include "asperity/texture/normal_map.hpp"
 #include "asperity/texture/png_io.hpp"
 
@@ -39,10 +40,15 @@ struct AssetMaterial {
   bool has_base_color = false;
   Vec3 base_color = Vec3(0.7, 0.7, 0.7);  // linear RGB factor (glTF baseColorFactor, MTL Kd)
   std::string base_color_texture;         // its file name; empty when none
+  // The base colour texture decoded (display only); null without one or with load_textures off.
+  std::shared_ptr<const ColorImage> base_color_image;
 };
 
 struct ImportedAsset {
   std::shared_ptr<TriangleMeshData> mesh;  // triangles of all chosen meshes, uvs of `uv_set`
+  // The mesh as imported, for display: the same as `mesh` until a caller replaces `mesh` with a
+  // simplified copy for collision.
+  std::shared_ptr<const TriangleMeshData> display_mesh;
   AssetMaterial material;
 };
 

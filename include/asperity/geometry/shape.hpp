@@ -37,6 +37,9 @@ struct Shape {
   Vec3 plane_normal = Vec3::UnitZ();             // Plane (static bodies only)
   double plane_offset = 0.0;                     // Plane (m)
   std::shared_ptr<const TriangleMeshData> mesh;  // ConvexHull (points) or TriangleMesh
+  // What renderers draw for a ConvexHull or TriangleMesh loaded from an asset: its full,
+  // unsimplified mesh (collision uses `mesh`). Null: draw `mesh`.
+  std::shared_ptr<const TriangleMeshData> display_mesh;
 
   double density = 1000.0;  // kg/m^3, for mass and inertia of dynamic bodies
   Surface surface;

@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "asperity/texture/color_image.hpp"
 #include "asperity/texture/generators.hpp"
 #include "asperity/texture/normal_map.hpp"
 #include "asperity/texture/png_io.hpp"
@@ -44,6 +45,9 @@ struct Surface {
   double texture_size = 0.25;             // metres covered by one repeat of the texture (u and v)
   double texture_rotation = 0.0;          // radians, rotates the texture within the face's UV plane
   Vec3 base_color = Vec3(0.7, 0.7, 0.7);  // linear RGB albedo the renderer shades with (0..1)
+  // An asset's base colour texture, which the renderer multiplies base_color by (display only;
+  // it follows the mesh's UVs). Null: none.
+  std::shared_ptr<const ColorImage> base_color_texture;
 };
 
 // The normal map `source` names, read (with a warning on stderr when the map's slopes

@@ -9,6 +9,7 @@
 
 #include "asperity/geometry/shape_mesh.hpp"
 #include "asperity/math/types.hpp"
+#include "asperity/texture/color_image.hpp"
 #include "asperity/texture/normal_map.hpp"
 #include "asperity/world/debug_draw.hpp"
 
@@ -21,9 +22,12 @@ struct RenderItem {
   // The surface's tangent-space normal map (rows bottom-up, x along T, y along B); null = flat.
   std::shared_ptr<const NormalMap> normal_map;
   Vec3 base_color = Vec3(0.7, 0.7, 0.7);  // linear RGB albedo
-  bool ground = false;                    // draw the grid on it; casts no shadow
-  bool highlight = false;                 // selected in the viewer (rim tint)
-  uint32_t id = 0;                        // caller's tag (body id), handed back by picking
+  // An sRGB colour texture (rows bottom-up) multiplying base_color along the mesh's uvs; null =
+  // none.
+  std::shared_ptr<const ColorImage> base_color_texture;
+  bool ground = false;     // draw the grid on it; casts no shadow
+  bool highlight = false;  // selected in the viewer (rim tint)
+  uint32_t id = 0;         // caller's tag (body id), handed back by picking
 };
 
 struct RenderScene {

@@ -47,6 +47,9 @@ struct SceneMesh {
   double scale = 1.0;  // uniform scale applied to the OBJ's coordinates (1)
   int simplify = 0;    // target triangle count; 0 = keep every triangle
   std::string node;    // one node or mesh of a multi-mesh asset by name; empty = all of them
+  // The shape's surface names no base_color: the asset's base colour (factor and texture) is
+  // shown instead.
+  bool asset_base_color = true;
 };
 
 // The view a scene is best seen from ("camera" in the JSON): `asperity render` and
