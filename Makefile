@@ -15,7 +15,7 @@ FUZZ_SECONDS ?= 60
 FUZZ_TARGETS ?= scene png obj generators asset cli
 SOAK_SECONDS ?= 600
 
-.PHONY: all deps configure build demo test bench format clean sanitize-build sanitize fuzz soak
+.PHONY: all deps configure build demo node-tools test bench format clean sanitize-build sanitize fuzz soak
 
 all: build
 
@@ -31,8 +31,12 @@ build: configure
 demo: build
 	@scripts/demo.sh $(BUILD)/bin $(OUT)
 
-test: build
-	@cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 600
+# Test tools from the npm registry (obj2gltf); the suite then requires them instead of skipping.
+node-tools:
+	@scripts/install-node-tools.sh $(BUILD)/node-tools
+
+test: build node-tools
+	@cd $(BUILD) && ASPERITY_REQUIRE_NODE_TOOLS=1 ctest --output-on-failure -j$(JOBS) --timeout 600
 
 # One clang build with ASan + UBSan serves the test suite and the libFuzzer targets alike, so
 # the library is compiled once for both. Sanitizer reports abort the test that made them;
