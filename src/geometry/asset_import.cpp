@@ -148,10 +148,24 @@ bool hasUvs(const aiMesh& m, int uv_set) {
          m.HasTextureCoords(static_cast<unsigned>(uv_set));
 }
 
+// The file's tangent of vertex `v` through the node transform, with its bitangent sign
+// (glTF TANGENT: assimp stores b = w n x t, so w is the sign of (n x t) . b after transforming).
+Vec4 fileTangent(const aiMesh& m, unsigned v, const aiMatrix4x4& transform) {
+  const aiMatrix3x3 linear(transform);
+  aiMatrix3x3 normal_matrix = linear;
+  normal_matrix.Inverse().Transpose();
+  const aiVector3D t = linear * m.mTangents[v], b = linear * m.mBitangents[v];
+  const aiVector3D n = m.HasNormals() ? normal_matrix * m.mNormals[v] : t ^ b;
+  const Vec3 tt = Vec3(t.x, t.y, t.z).normalized();
+  const double w = (Vec3(n.x, n.y, n.z).cross(tt)).dot(Vec3(b.x, b.y, b.z)) < 0.0 ? -1.0 : 1.0;
+  return Vec4(tt.x(), tt.y(), tt.z(), w);
+}
+
 // Appends one placed mesh's triangles (positions transformed and scaled, the material's uvs,
-// transformed, when `keep_uvs`); a normal-mapped asset must have them.
+// transformed, when `keep_uvs`, the file's tangents when `keep_tangents`); a normal-mapped
+// asset must have uvs.
 void appendMesh(const Placed& p, double scale, const AssetMaterial& material, bool keep_uvs,
-                const std::string& asset, TriangleMeshData& out) {
+                bool keep_tangents, const std::string& asset, TriangleMeshData& out) {
   const int uv_set = material.uv_set;
   const bool need_uvs = material.has_normal_texture;
   const aiMesh& m = *p.mesh;
@@ -170,6 +184,7 @@ void appendMesh(const Placed& p, double scale, const AssetMaterial& material, bo
       const aiVector3D& t = m.mTextureCoords[uv_set][v];
       out.uvs.push_back(material.uv_transform * Vec3(t.x, t.y, 1.0));
     }
+    if (keep_tangents) out.tangents.push_back(fileTangent(m, v, p.transform));
   }
   for (unsigned f = 0; f < m.mNumFaces; ++f) {
     const aiFace& face = m.mFaces[f];
@@ -203,10 +218,18 @@ ImportedAsset convert(const aiScene& scene, const detail::Source& src,
   const bool keep_uvs = asset.material.has_normal_texture ||
                         std::all_of(placed.begin(), placed.end(),
                                     [&](const Placed& p) { return hasUvs(*p.mesh, uv_set); });
+  // The file's tangents when every chosen mesh has them (without aiProcess_CalcTangentSpace,
+  // assimp only has tangents the file stored). They describe the file's uvs: a texture
+  // transform that turns or mirrors the uvs leaves them to the UV gradients instead.
+  const bool keep_tangents =
+      keep_uvs && asset.material.uv_transform.leftCols<2>().isDiagonal() &&
+      (asset.material.uv_transform.leftCols<2>().diagonal().array() > 0).all() &&
+      std::all_of(placed.begin(), placed.end(),
+                  [](const Placed& p) { return p.mesh->HasTangentsAndBitangents(); });
   asset.mesh = std::make_shared<TriangleMeshData>();
   asset.mesh->source_file = src.name;
   for (const Placed& p : placed)
-    appendMesh(p, options.scale, asset.material, keep_uvs, src.name, *asset.mesh);
+    appendMesh(p, options.scale, asset.material, keep_uvs, keep_tangents, src.name, *asset.mesh);
   if (asset.mesh->triangles.empty()) throw Error(src.name + ": the chosen meshes have no faces");
   asset.display_mesh = asset.mesh;
   return asset;

@@ -163,7 +163,9 @@ void buildHull(const TriangleMeshData& data, MeshBuilder& out) {
   }
 }
 
-// Triangle mesh with its own UVs: shared vertices, area-weighted normals, UV-gradient tangents.
+// Triangle mesh with its own UVs: shared vertices, area-weighted normals, and the file's tangents
+// or else UV-gradient tangents accumulated per vertex (MikkTSpace's convention: t along +u, the
+// bitangent's sign kept, so mirrored UV islands stay mirrored).
 void buildUvMesh(const TriangleMeshData& data, ShapeMesh& mesh) {
   const size_t nv = data.vertices.size();
   std::vector<Vec3> n(nv, Vec3::Zero()), t(nv, Vec3::Zero()), b(nv, Vec3::Zero());
@@ -185,6 +187,10 @@ void buildUvMesh(const TriangleMeshData& data, ShapeMesh& mesh) {
   MeshBuilder out(mesh, 1.0);
   for (size_t i = 0; i < nv; ++i) {
     const Vec3 ni = n[i].squaredNorm() > 0.0 ? n[i].normalized() : Vec3::UnitZ();
+    if (!data.tangents.empty()) {
+      t[i] = data.tangents[i].head<3>();
+      b[i] = data.tangents[i].w() * ni.cross(t[i]);
+    }
     SurfaceFrame f = detail::orthogonalFrame(t[i], b[i], ni);
     f.uv = data.uvs[i];
     out.add(data.vertices[i], f);
@@ -210,6 +216,9 @@ void buildTriangleMesh(const TriangleMeshData& data, ShapeMesh& mesh, double sca
     throw Error("triangle mesh: " + std::to_string(data.uvs.size()) + " UVs for " +
                 std::to_string(nv) + " vertices");
   }
+  if (!data.tangents.empty() && (data.tangents.size() != data.vertices.size() || data.uvs.empty()))
+    throw Error("triangle mesh: " + std::to_string(data.tangents.size()) + " tangents for " +
+                std::to_string(nv) + " vertices" + (data.uvs.empty() ? " without UVs" : ""));
   if (!data.uvs.empty()) return buildUvMesh(data, mesh);
   // Without UVs: flat-shaded planar projection per triangle.
   MeshBuilder out(mesh, scale);

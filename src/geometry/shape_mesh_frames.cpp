@@ -66,8 +66,16 @@ SurfaceFrame meshFrame(const Shape& s, int index, const Vec3& p) {
   // With UVs: barycentric uv, tangent frame from the UV gradients (already in repeats).
   std::array<Vec2, 3> uv;
   for (int k = 0; k < 3; ++k) uv[k] = data.uvs.at(static_cast<size_t>(tri[k]));
-  SurfaceFrame f = detail::gradientFrame(v, uv, n);
   const Vec3 l = detail::barycentric(v, p);
+  SurfaceFrame f;
+  if (data.tangents.size() == data.vertices.size()) {
+    // The file's tangents, interpolated; the first corner's bitangent sign.
+    Vec3 t = Vec3::Zero();
+    for (int k = 0; k < 3; ++k) t += l[k] * data.tangents[static_cast<size_t>(tri[k])].head<3>();
+    f = detail::orthogonalFrame(t, data.tangents[static_cast<size_t>(tri[0])].w() * n.cross(t), n);
+  } else {
+    f = detail::gradientFrame(v, uv, n);
+  }
   f.uv = l[0] * uv[0] + l[1] * uv[1] + l[2] * uv[2];
   return f;
 }

@@ -10,6 +10,7 @@
 
 #include "asperity/error.hpp"
 #include "asperity/geometry/mesh_io.hpp"
+#include "asperity/geometry/shape_mesh.hpp"
 #include "collision/signed_distance_field.hpp"
 #include "support/test_support.hpp"
 
@@ -81,6 +82,31 @@ TEST(AssetImport, GltfTextureTransformIsAppliedToTheUvs) {
   EXPECT_EQ(matched, 4);
   // Without the extension the uvs are the file's.
   EXPECT_TRUE(importAsset(fixture("plate.gltf")).material.uv_transform.isIdentity());
+}
+
+TEST(AssetImport, TheFilesTangentsGiveTheTextureFrame) {
+  // plate_tangents.gltf: the plate with NORMAL (+z) and TANGENT (0, 1, 0, w = -1), a frame
+  // turned 90 degrees from its UV gradients (t = +x) and mirrored: b = w n x t = +x.
+  const ImportedAsset a = importAsset(fixture("plate_tangents.gltf"));
+  ASSERT_EQ(a.mesh->tangents.size(), a.mesh->vertices.size());
+  for (const Vec4& t : a.mesh->tangents) EXPECT_TRUE(t.isApprox(Vec4(0, 1, 0, -1), 1e-6)) << t;
+  Shape plate;
+  plate.type = ShapeType::TriangleMesh;
+  plate.mesh = a.mesh;
+  // At a contact on the plate and at every vertex of the mesh that the samplers rasterise.
+  const SurfaceFrame f = surfaceFrameAt(plate, 0, Vec3(0.02, -0.03, 0));
+  EXPECT_TRUE(f.t.isApprox(Vec3::UnitY(), 1e-9)) << f.t.transpose();
+  EXPECT_TRUE(f.b.isApprox(Vec3::UnitX(), 1e-9)) << f.b.transpose();
+  const ShapeMesh shown = buildShapeMesh(plate);
+  for (size_t v = 0; v < shown.positions.size(); ++v) {
+    EXPECT_TRUE(shown.tangents[v].isApprox(Vec3f::UnitY(), 1e-6f));
+    EXPECT_TRUE(shown.bitangents[v].isApprox(Vec3f::UnitX(), 1e-6f));
+  }
+  // Without TANGENT the UV gradients decide: t = +x, b = +y.
+  const ImportedAsset plain = importAsset(fixture("plate.gltf"));
+  EXPECT_TRUE(plain.mesh->tangents.empty());
+  plate.mesh = plain.mesh;
+  EXPECT_TRUE(surfaceFrameAt(plate, 0, Vec3(0.02, -0.03, 0)).t.isApprox(Vec3::UnitX(), 1e-9));
 }
 
 TEST(AssetImport, DataUriImageMatchesTheExternalFile) {

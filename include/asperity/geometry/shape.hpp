@@ -23,6 +23,10 @@ inline constexpr std::pair<const char*, ShapeType> kShapeTypeNames[] = {
 struct TriangleMeshData {
   std::vector<Vec3> vertices;
   std::vector<Vec2> uvs;  // empty or one per vertex
+  // Empty, or one per vertex: the file's own tangent (xyz, along +u) and bitangent sign (w: the
+  // bitangent is w n x t), as glTF's TANGENT stores them. Without them, tangents come from the
+  // UV gradients.
+  std::vector<Vec4> tangents;
   std::vector<std::array<int, 3>> triangles;
   std::string source_file;  // OBJ path when loaded from a file (for saving scenes back)
 };
