@@ -19,6 +19,8 @@ packages=(
   libcairo2-dev fonts-dejavu-core
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # the assimp command, which writes the FBX and COLLADA files the asset tests read back
+  assimp-utils
   # OpenGL through EGL (Mesa's llvmpipe when there is no GPU), viewer, videos
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev libimgui-dev
   xvfb xauth ffmpeg
