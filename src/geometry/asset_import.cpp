@@ -148,24 +148,42 @@ bool hasUvs(const aiMesh& m, int uv_set) {
          m.HasTextureCoords(static_cast<unsigned>(uv_set));
 }
 
+// Normals transform by the inverse transpose of the node's linear part.
+aiMatrix3x3 normalMatrix(const aiMatrix4x4& transform) {
+  aiMatrix3x3 m(transform);
+  return m.Inverse().Transpose();
+}
+
+// The file's unit normal of vertex `v` through the node transform.
+Vec3 fileNormal(const aiMesh& m, unsigned v, const aiMatrix4x4& transform) {
+  const aiVector3D n = normalMatrix(transform) * m.mNormals[v];
+  const Vec3 out(n.x, n.y, n.z);
+  return out.squaredNorm() > 0.0 ? out.normalized() : Vec3::UnitZ();
+}
+
 // The file's tangent of vertex `v` through the node transform, with its bitangent sign
 // (glTF TANGENT: assimp stores b = w n x t, so w is the sign of (n x t) . b after transforming).
 Vec4 fileTangent(const aiMesh& m, unsigned v, const aiMatrix4x4& transform) {
   const aiMatrix3x3 linear(transform);
-  aiMatrix3x3 normal_matrix = linear;
-  normal_matrix.Inverse().Transpose();
   const aiVector3D t = linear * m.mTangents[v], b = linear * m.mBitangents[v];
-  const aiVector3D n = m.HasNormals() ? normal_matrix * m.mNormals[v] : t ^ b;
+  const aiVector3D n = m.HasNormals() ? normalMatrix(transform) * m.mNormals[v] : t ^ b;
   const Vec3 tt = Vec3(t.x, t.y, t.z).normalized();
   const double w = (Vec3(n.x, n.y, n.z).cross(tt)).dot(Vec3(b.x, b.y, b.z)) < 0.0 ? -1.0 : 1.0;
   return Vec4(tt.x(), tt.y(), tt.z(), w);
 }
 
+// Which per-vertex attributes every chosen mesh has, so that all of them are kept.
+struct Kept {
+  bool uvs = false;
+  bool normals = false;
+  bool tangents = false;
+};
+
 // Appends one placed mesh's triangles (positions transformed and scaled, the material's uvs,
-// transformed, when `keep_uvs`, the file's tangents when `keep_tangents`); a normal-mapped
-// asset must have uvs.
-void appendMesh(const Placed& p, double scale, const AssetMaterial& material, bool keep_uvs,
-                bool keep_tangents, const std::string& asset, TriangleMeshData& out) {
+// transformed, the file's normals and tangents, as `kept` says); a normal-mapped asset must
+// have uvs.
+void appendMesh(const Placed& p, double scale, const AssetMaterial& material, const Kept& kept,
+                const std::string& asset, TriangleMeshData& out) {
   const int uv_set = material.uv_set;
   const bool need_uvs = material.has_normal_texture;
   const aiMesh& m = *p.mesh;
@@ -180,11 +198,12 @@ void appendMesh(const Placed& p, double scale, const AssetMaterial& material, bo
   for (unsigned v = 0; v < m.mNumVertices; ++v) {
     const aiVector3D q = p.transform * m.mVertices[v];
     out.vertices.emplace_back(scale * q.x, scale * q.y, scale * q.z);
-    if (keep_uvs) {
+    if (kept.uvs) {
       const aiVector3D& t = m.mTextureCoords[uv_set][v];
       out.uvs.push_back(material.uv_transform * Vec3(t.x, t.y, 1.0));
     }
-    if (keep_tangents) out.tangents.push_back(fileTangent(m, v, p.transform));
+    if (kept.normals) out.normals.push_back(fileNormal(m, v, p.transform));
+    if (kept.tangents) out.tangents.push_back(fileTangent(m, v, p.transform));
   }
   for (unsigned f = 0; f < m.mNumFaces; ++f) {
     const aiFace& face = m.mFaces[f];
@@ -215,21 +234,21 @@ ImportedAsset convert(const aiScene& scene, const detail::Source& src,
   }
   // UVs are kept when every chosen mesh has them (a scene's own normal_map follows them too).
   const int uv_set = asset.material.uv_set;
-  const bool keep_uvs = asset.material.has_normal_texture ||
-                        std::all_of(placed.begin(), placed.end(),
-                                    [&](const Placed& p) { return hasUvs(*p.mesh, uv_set); });
-  // The file's tangents when every chosen mesh has them (without aiProcess_CalcTangentSpace,
-  // assimp only has tangents the file stored). They describe the file's uvs: a texture
-  // transform that turns or mirrors the uvs leaves them to the UV gradients instead.
-  const bool keep_tangents =
-      keep_uvs && asset.material.uv_transform.leftCols<2>().isDiagonal() &&
-      (asset.material.uv_transform.leftCols<2>().diagonal().array() > 0).all() &&
-      std::all_of(placed.begin(), placed.end(),
-                  [](const Placed& p) { return p.mesh->HasTangentsAndBitangents(); });
+  auto all = [&](auto has) { return std::all_of(placed.begin(), placed.end(), has); };
+  Kept kept;
+  kept.uvs = asset.material.has_normal_texture ||
+             all([&](const Placed& p) { return hasUvs(*p.mesh, uv_set); });
+  // Normals and tangents as the file stores them (without aiProcess_GenNormals and
+  // aiProcess_CalcTangentSpace assimp invents none). The tangents describe the file's uvs: a
+  // texture transform that turns or mirrors the uvs leaves them to the UV gradients instead.
+  kept.normals = all([](const Placed& p) { return p.mesh->HasNormals(); });
+  kept.tangents = kept.uvs && asset.material.uv_transform.leftCols<2>().isDiagonal() &&
+                  (asset.material.uv_transform.leftCols<2>().diagonal().array() > 0).all() &&
+                  all([](const Placed& p) { return p.mesh->HasTangentsAndBitangents(); });
   asset.mesh = std::make_shared<TriangleMeshData>();
   asset.mesh->source_file = src.name;
   for (const Placed& p : placed)
-    appendMesh(p, options.scale, asset.material, keep_uvs, keep_tangents, src.name, *asset.mesh);
+    appendMesh(p, options.scale, asset.material, kept, src.name, *asset.mesh);
   if (asset.mesh->triangles.empty()) throw Error(src.name + ": the chosen meshes have no faces");
   asset.display_mesh = asset.mesh;
   return asset;

@@ -152,6 +152,7 @@ std::shared_ptr<TriangleMeshData> simplifyMesh(const TriangleMeshData& mesh,
   std::vector<int> remap(mesh.vertices.size(), -1);
   out->vertices.clear();
   out->uvs.clear();
+  out->normals.clear();
   out->tangents.clear();
   out->triangles.clear();
   for (auto tri : reduced.triangles) {
@@ -161,6 +162,7 @@ std::shared_ptr<TriangleMeshData> simplifyMesh(const TriangleMeshData& mesh,
         remap[v] = static_cast<int>(out->vertices.size());
         out->vertices.push_back(mesh.vertices[v]);
         if (!mesh.uvs.empty()) out->uvs.push_back(mesh.uvs[v]);
+        if (!mesh.normals.empty()) out->normals.push_back(mesh.normals[v]);
         if (!mesh.tangents.empty()) out->tangents.push_back(mesh.tangents[v]);
       }
       i = remap[v];

@@ -186,7 +186,9 @@ void buildUvMesh(const TriangleMeshData& data, ShapeMesh& mesh) {
   // Per vertex: orthogonalise.
   MeshBuilder out(mesh, 1.0);
   for (size_t i = 0; i < nv; ++i) {
-    const Vec3 ni = n[i].squaredNorm() > 0.0 ? n[i].normalized() : Vec3::UnitZ();
+    const Vec3 ni = !data.normals.empty()      ? data.normals[i]
+                    : n[i].squaredNorm() > 0.0 ? n[i].normalized()
+                                               : Vec3::UnitZ();
     if (!data.tangents.empty()) {
       t[i] = data.tangents[i].head<3>();
       b[i] = data.tangents[i].w() * ni.cross(t[i]);
@@ -216,6 +218,9 @@ void buildTriangleMesh(const TriangleMeshData& data, ShapeMesh& mesh, double sca
     throw Error("triangle mesh: " + std::to_string(data.uvs.size()) + " UVs for " +
                 std::to_string(nv) + " vertices");
   }
+  if (!data.normals.empty() && data.normals.size() != data.vertices.size())
+    throw Error("triangle mesh: " + std::to_string(data.normals.size()) + " normals for " +
+                std::to_string(nv) + " vertices");
   if (!data.tangents.empty() && (data.tangents.size() != data.vertices.size() || data.uvs.empty()))
     throw Error("triangle mesh: " + std::to_string(data.tangents.size()) + " tangents for " +
                 std::to_string(nv) + " vertices" + (data.uvs.empty() ? " without UVs" : ""));

@@ -90,6 +90,8 @@ TEST(AssetImport, TheFilesTangentsGiveTheTextureFrame) {
   const ImportedAsset a = importAsset(fixture("plate_tangents.gltf"));
   ASSERT_EQ(a.mesh->tangents.size(), a.mesh->vertices.size());
   for (const Vec4& t : a.mesh->tangents) EXPECT_TRUE(t.isApprox(Vec4(0, 1, 0, -1), 1e-6)) << t;
+  ASSERT_EQ(a.mesh->normals.size(), a.mesh->vertices.size());
+  for (const Vec3& n : a.mesh->normals) EXPECT_TRUE(n.isApprox(Vec3::UnitZ(), 1e-6)) << n;
   Shape plate;
   plate.type = ShapeType::TriangleMesh;
   plate.mesh = a.mesh;
@@ -105,6 +107,7 @@ TEST(AssetImport, TheFilesTangentsGiveTheTextureFrame) {
   // Without TANGENT the UV gradients decide: t = +x, b = +y.
   const ImportedAsset plain = importAsset(fixture("plate.gltf"));
   EXPECT_TRUE(plain.mesh->tangents.empty());
+  EXPECT_TRUE(plain.mesh->normals.empty());
   plate.mesh = plain.mesh;
   EXPECT_TRUE(surfaceFrameAt(plate, 0, Vec3(0.02, -0.03, 0)).t.isApprox(Vec3::UnitX(), 1e-9));
 }

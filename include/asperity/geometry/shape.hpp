@@ -23,6 +23,10 @@ inline constexpr std::pair<const char*, ShapeType> kShapeTypeNames[] = {
 struct TriangleMeshData {
   std::vector<Vec3> vertices;
   std::vector<Vec2> uvs;  // empty or one per vertex
+  // Empty, or one per vertex: the file's own unit vertex normal (glTF NORMAL, FBX, COLLADA),
+  // which the per-vertex texture frames and shading follow. Without them, area-weighted face
+  // normals. Contacts always use the triangle's own normal.
+  std::vector<Vec3> normals;
   // Empty, or one per vertex: the file's own tangent (xyz, along +u) and bitangent sign (w: the
   // bitangent is w n x t), as glTF's TANGENT stores them. Without them, tangents come from the
   // UV gradients.
