@@ -87,6 +87,14 @@ py::array_t<double> angularVelocities(const PyWorld& w) {
   });
 }
 
+// Setting a state restarts from it: what earlier steps left behind (contact points, warm
+// starts, kept samples) goes, so the world then evolves as any other restarted there.
+namespace {
+void restart(PyWorld& w) {
+  w.world->forgetContactHistory();
+}
+}  // namespace
+
 void setPositions(PyWorld& w, const py::handle& values) {
   const auto a = stateArg(w, values, 3, "positions");
   for (BodyId i = 0; i < w.world->bodies().size(); ++i) {
@@ -96,6 +104,7 @@ void setPositions(PyWorld& w, const py::handle& values) {
     pose.position = Vec3(a.at(i, 0), a.at(i, 1), a.at(i, 2));
     b.pose = pose * b.com_offset;
   }
+  restart(w);
 }
 
 void setOrientations(PyWorld& w, const py::handle& values) {
@@ -111,6 +120,7 @@ void setOrientations(PyWorld& w, const py::handle& values) {
     pose.rotation = Quat(a.at(i, 0), a.at(i, 1), a.at(i, 2), a.at(i, 3)).normalized();
     b.pose = pose * b.com_offset;
   }
+  restart(w);
 }
 
 void setLinearVelocities(PyWorld& w, const py::handle& values) {
@@ -122,6 +132,7 @@ void setLinearVelocities(PyWorld& w, const py::handle& values) {
     b.linear_velocity =
         v - b.angular_velocity.cross(b.descriptionPose().position - b.pose.position);
   }
+  restart(w);
 }
 
 void setAngularVelocities(PyWorld& w, const py::handle& values) {
@@ -134,6 +145,7 @@ void setAngularVelocities(PyWorld& w, const py::handle& values) {
     b.linear_velocity =
         v_origin - b.angular_velocity.cross(b.descriptionPose().position - b.pose.position);
   }
+  restart(w);
 }
 
 py::dict contacts(const PyWorld& w) {

@@ -163,9 +163,9 @@ struct CollisionDetector::Impl {
 
   std::vector<std::pair<int, int>> plane_pairs;  // record pairs found by the broadphase
   std::vector<std::pair<int, int>> sdf_pairs;
-  std::vector<Contact> contacts;  // this call's contacts in the order found
+  std::vector<Contact> contacts;               // this call's contacts in the order found
   std::vector<CylinderSidePoint> side_points;  // scratch of collectCylinderSide
-  std::vector<Contact> sorted;    // detect's result when the caller gives no vector
+  std::vector<Contact> sorted;                 // detect's result when the caller gives no vector
   struct SortKey {
     BodyId b;
     uint64_t key;
@@ -558,6 +558,10 @@ Contact CollisionDetector::Impl::sweptContact(const ShapeRecord& moving, const V
 
 CollisionDetector::CollisionDetector() : impl_(std::make_unique<Impl>()) {}
 CollisionDetector::~CollisionDetector() = default;
+
+void CollisionDetector::restartPointIds() {
+  impl_->next_point_id = 1;
+}
 
 void CollisionDetector::setBodies(std::span<const Body> bodies, const CollisionSettings& settings) {
   // Settings first: each bad one named.

@@ -81,6 +81,9 @@ class CollisionDetector {
   // its size toward a plane in that time gets speculative plane contacts (phi < 0) up to that
   // distance, so it cannot pass through the plane in one step; 0 (default) = none.
   void setSpeculativeTime(double seconds);
+  // Numbers new contact points from 1 again, as in a new detector (with setBodies and the
+  // solver's warm start forgotten: World::forgetContactHistory).
+  void restartPointIds();
 
  private:
   struct Impl;

@@ -169,6 +169,10 @@ void CpuPatchSampler::State::sample(std::span<const Body> bodies, Contact& conta
 
 CpuPatchSampler::CpuPatchSampler()
     : state_(std::make_unique<State>()), reuse_(std::make_unique<patch::PatchReuse>()) {}
+
+void CpuPatchSampler::forgetHistory() {
+  reuse_ = std::make_unique<patch::PatchReuse>();
+}
 CpuPatchSampler::~CpuPatchSampler() = default;
 
 void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& contact,

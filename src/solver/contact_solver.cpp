@@ -231,9 +231,8 @@ void ContactSolver::warmStartRow(const Cached& cached, ContactRow& row, size_t i
   if (!friction_) return;
   const Vec2 tb(range.first->tangential.dot(row.t),
                 range.first->tangential.dot(row.n.cross(row.t)));
-  const Vec2 projected =
-      std::visit([&](const auto& limits) { return limits[index].project(tb, row.lambda_n); },
-                 limits_);
+  const Vec2 projected = std::visit(
+      [&](const auto& limits) { return limits[index].project(tb, row.lambda_n); }, limits_);
   row.lambda_t = projected.x();
   row.lambda_b = projected.y();
 }
@@ -449,6 +448,11 @@ void ContactSolver::finish(std::span<Body> bodies, std::span<Contact> contacts) 
   // that order already (stable: ties keep contact order).
   if (!std::is_sorted(cache_.begin(), cache_.end())) std::stable_sort(cache_.begin(), cache_.end());
   storeJointImpulses();
+}
+
+void ContactSolver::forgetWarmStart() {
+  cache_.clear();
+  std::fill(joint_lambda_.begin(), joint_lambda_.end(), 0.0);
 }
 
 }  // namespace asperity

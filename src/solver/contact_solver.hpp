@@ -71,6 +71,8 @@ class ContactSolver {
   // Writes velocities and impulses back and remembers them for the next step's warm start.
   void finish(std::span<Body> bodies, std::span<Contact> contacts);
 
+  // Forgets the impulses kept for warm starting (contacts and joints), as in a new solver.
+  void forgetWarmStart();
   // Current solver velocities of a body (world frame).
   const Vec3& linearVelocity(BodyId id) const { return v_[id]; }
   const Vec3& angularVelocity(BodyId id) const { return w_[id]; }
@@ -166,7 +168,7 @@ class ContactSolver {
   std::vector<int> pending_;        // scratch of scheduleRows
   std::vector<int> slot_;           // contact i's row in rows_ (rows_ is stored in sweep order)
   std::vector<ContactRow> sorted_;  // scratch of storeInSweepOrder
-  LimitVectors limits_;  // one per contact row, of the settings' limit surface
+  LimitVectors limits_;             // one per contact row, of the settings' limit surface
   bool friction_ = true;
   bool warm_started_ = false;
   std::vector<BallRow> balls_;

@@ -200,6 +200,16 @@ double World::jointError(int index) const {
   return (pa - pb).norm();
 }
 
+void World::forgetContactHistory() {
+  // Collision is rebuilt before the next step: new pairs, found in the same order as in a new
+  // world, with new persistent points numbered from 1.
+  bodies_changed_ = true;
+  collision_->restartPointIds();
+  solver_->forgetWarmStart();
+  provider_->forgetHistory();
+  contacts_.clear();
+}
+
 uint64_t World::stateHash() const {
   // FNV-1a over the bit patterns of the doubles (bit-exact, platform byte order).
   uint64_t hash = 1469598103934665603ull;

@@ -40,6 +40,7 @@ class CpuPatchSampler : public FrictionProvider {
   double lastPatchTimeMs() const override { return patch_ms_; }
   double lastAveragingTimeMs() const override { return averaging_ms_; }
   int lastReusedCount() const override { return reused_count_; }
+  void forgetHistory() override;
 
   // One contact, optionally with its per-pixel images. Same numbers as computeCoefficients.
   void sampleContact(std::span<const Body> bodies, Contact& contact,

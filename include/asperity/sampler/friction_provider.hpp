@@ -46,6 +46,8 @@ class FrictionProvider {
   virtual double lastAveragingTimeMs() const { return 0.0; }
   // Contacts of the last call that kept an earlier sample (FrictionSettings::reuse_pixels).
   virtual int lastReusedCount() const { return 0; }
+  // Forgets what earlier calls left behind (kept samples), as in a new provider.
+  virtual void forgetHistory() {}
 };
 
 }  // namespace asperity

@@ -174,6 +174,12 @@ class World {
   WorldSettings& settings() { return settings_; }
   const WorldSettings& settings() const { return settings_; }
 
+  // Forgets everything earlier steps left for the next one: the collision pairs and their
+  // persistent contact points, the solver's warm-start impulses, the friction provider's kept
+  // samples and the last contacts. Call it after setting bodies' poses or velocities to restart
+  // from them: from then on the world evolves exactly (bit for bit) as any world of the same
+  // bodies, joints and settings restarted from that state, whatever either did before.
+  void forgetContactHistory();
   // FNV-1a over the bit patterns of every body's pose and velocities (determinism checks).
   uint64_t stateHash() const;
 
