@@ -36,8 +36,9 @@ Vec2f ploughingVector(const Vec3f& m, Side side, float mu_max) {
     return (sign * kTwoOverPi / height) * tangential;
   }
   // Clamped (steep or facing away): mu_max along m'. Recompute |m_tb| in double in case the
-  // float squares underflowed.
-  const double exact_radius = std::hypot(static_cast<double>(m.x()), static_cast<double>(m.y()));
+  // float squares underflowed (squares of floats are exact in double: no hypot call needed).
+  const double x = m.x(), y = m.y();
+  const double exact_radius = std::sqrt(x * x + y * y);
   if (!(exact_radius > 0.0)) return Vec2f::Zero();
   const double scale = sign * static_cast<double>(mu_max) / exact_radius;
   return Vec2f(static_cast<float>(scale * m.x()), static_cast<float>(scale * m.y()));
