@@ -167,7 +167,9 @@ Vec4 fileTangent(const aiMesh& m, unsigned v, const aiMatrix4x4& transform) {
   const aiMatrix3x3 linear(transform);
   const aiVector3D t = linear * m.mTangents[v], b = linear * m.mBitangents[v];
   const aiVector3D n = m.HasNormals() ? normalMatrix(transform) * m.mNormals[v] : t ^ b;
-  const Vec3 tt = Vec3(t.x, t.y, t.z).normalized();
+  // A zero tangent (a broken file) stays zero: the frame then falls back to the normal's axes.
+  const Vec3 raw(t.x, t.y, t.z);
+  const Vec3 tt = raw.squaredNorm() > 0.0 ? raw.normalized() : Vec3::Zero();
   const double w = (Vec3(n.x, n.y, n.z).cross(tt)).dot(Vec3(b.x, b.y, b.z)) < 0.0 ? -1.0 : 1.0;
   return Vec4(tt.x(), tt.y(), tt.z(), w);
 }
