@@ -77,10 +77,12 @@ TEST(Renderer, BaseColourTextureTintsTheSurface) {
   };
   const render::RenderScene green = textured(20, 220, 30);
   const render::Camera camera = cameraFor(green);
-  const uint8_t* g = draw(green, camera).pixel(kWidth / 2, kHeight / 2);
+  const render::Image green_image = draw(green, camera);
+  const uint8_t* g = green_image.pixel(kWidth / 2, kHeight / 2);
   EXPECT_GT(int(g[1]), int(g[0]) + 60);
   EXPECT_GT(int(g[1]), int(g[2]) + 60);
-  const uint8_t* b = draw(textured(20, 30, 220), camera).pixel(kWidth / 2, kHeight / 2);
+  const render::Image blue_image = draw(textured(20, 30, 220), camera);
+  const uint8_t* b = blue_image.pixel(kWidth / 2, kHeight / 2);
   EXPECT_GT(int(b[2]), int(b[0]) + 60);
   // A white texture is the untextured surface.
   render::RenderScene plain = groundAndCube(nullptr);
