@@ -44,6 +44,10 @@ class GlPatchSampler : public FrictionProvider {
                            const FrictionSettings& settings) override;
   double lastPatchTimeMs() const override;
   double lastAveragingTimeMs() const override;
+  // Patch coherence as the cpu sampler's (FrictionSettings::reuse_pixels): contacts whose
+  // surfaces barely moved keep their sample and are not rendered.
+  int lastReusedCount() const override;
+  void forgetHistory() override;
 
   // GL_RENDERER of the context in use, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
   std::string renderer() const;

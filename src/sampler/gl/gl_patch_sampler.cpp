@@ -15,6 +15,7 @@
 #include "asperity/scene/friction_providers.hpp"
 #include "sampler/gl/gl_patch_resources.hpp"
 #include "sampler/patch_common.hpp"
+#include "sampler/patch_reuse.hpp"
 #include "sampler/patch_triangles.hpp"
 
 namespace asperity {
@@ -100,9 +101,12 @@ struct GlPatchSampler::Impl {
   int max_draw_buffers = 8;
   double patch_ms = 0.0, averaging_ms = 0.0;
   int passes = 0;
+  patch::PatchReuse reuse;        // earlier samples (patch coherence)
+  std::vector<Contact*> sampled;  // this call's contacts that are rendered
+  int reused = 0;
 
   void setupVertexArray();
-  void collect(std::span<const Body> bodies, std::span<Contact> contacts,
+  void collect(std::span<const Body> bodies, std::span<Contact* const> contacts,
                const FrictionSettings& settings, std::vector<PassContact>& out);
   void render(const FrictionSettings& settings);
   void average(int slot, const FrictionSettings& settings);
@@ -135,7 +139,7 @@ void GlPatchSampler::Impl::setupVertexArray() {
   glBindVertexArray(0);
 }
 
-void GlPatchSampler::Impl::collect(std::span<const Body> bodies, std::span<Contact> contacts,
+void GlPatchSampler::Impl::collect(std::span<const Body> bodies, std::span<Contact* const> contacts,
                                    const FrictionSettings& settings,
                                    std::vector<PassContact>& out) {
   vertices.clear();
@@ -143,7 +147,7 @@ void GlPatchSampler::Impl::collect(std::span<const Body> bodies, std::span<Conta
   out.clear();
   // Contact c of the pass: A in tile 2c, B in tile 2c + 1; one draw per shape with triangles.
   for (size_t c = 0; c < contacts.size(); ++c) {
-    Contact& contact = contacts[c];
+    Contact& contact = *contacts[c];
     const patch::Volume volume = patch::makeVolume(contact, settings);
     const patch::ShapeRange ranges[2] = {patch::shapesOf(bodies, contact, Side::A),
                                          patch::shapesOf(bodies, contact, Side::B)};
@@ -288,6 +292,14 @@ int GlPatchSampler::lastPassCount() const {
   return impl_->passes;
 }
 
+int GlPatchSampler::lastReusedCount() const {
+  return impl_->reused;
+}
+
+void GlPatchSampler::forgetHistory() {
+  impl_->reuse = patch::PatchReuse();
+}
+
 std::string GlPatchSampler::renderer() const {
   const auto* text = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   return text != nullptr ? text : "";
@@ -311,12 +323,19 @@ void GlPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span
                   im.max_draw_buffers);
   const int per_row = im.atlas.size() / r;
   const size_t per_pass = static_cast<size_t>(per_row * per_row / 2);
+  // Contacts whose earlier sample still holds keep it; the others are rendered.
+  const std::vector<uint8_t> kept = im.reuse.reuse(bodies, contacts, settings);
+  im.sampled.clear();
+  for (size_t i = 0; i < contacts.size(); ++i)
+    if (!kept[i]) im.sampled.push_back(&contacts[i]);
+  im.reused = static_cast<int>(contacts.size() - im.sampled.size());
+  const std::span<Contact* const> sampled(im.sampled);
   // Passes of at most per_pass contacts; pass p's read-back overlaps pass p + 1's rendering.
-  for (size_t first = 0; first < contacts.size(); first += per_pass) {
+  for (size_t first = 0; first < sampled.size(); first += per_pass) {
     const int slot = im.passes % 2;
     if (im.readbacks[static_cast<size_t>(slot)].pending()) im.average(slot, settings);
-    const size_t count = std::min(per_pass, contacts.size() - first);
-    im.collect(bodies, contacts.subspan(first, count), settings,
+    const size_t count = std::min(per_pass, sampled.size() - first);
+    im.collect(bodies, sampled.subspan(first, count), settings,
                im.pass_contacts[static_cast<size_t>(slot)]);
     im.render(settings);
     const int tiles = static_cast<int>(2 * count);
@@ -329,6 +348,7 @@ void GlPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span
     if (im.readbacks[static_cast<size_t>(slot)].pending()) im.average(slot, settings);
   }
   saved.restore();
+  im.reuse.remember(bodies, contacts, kept);
   im.patch_ms = msSince(start) - im.averaging_ms;
 }
 

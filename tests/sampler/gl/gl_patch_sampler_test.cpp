@@ -107,6 +107,42 @@ TEST(GlPatchSampler, UsesAndRestoresTheCallersContext) {
   glDeleteFramebuffers(1, &fbo);
 }
 
+TEST(GlPatchSampler, ReusesTheSamplesOfContactsThatBarelyMoved) {
+  // Forty corner contacts sampled, then again after moving half of them by 0.05 pixel and the
+  // other half by 2 pixels along t, with reuse_pixels 0.1: the first half keeps its samples
+  // (close to fresh ones: the maps vary little over 0.05 pixel), the second half is rendered
+  // again (the CPU reference's numbers to RGBA8 rounding).
+  Scene scene{{planeBody(roughMap(32, 1), 0.05, 1.0),
+               boxBody(Vec3(0.1, 0.1, 0.1), {Vec3(0, 0, 0.1)}, roughMap(32, 2), 0.08, 2.0)},
+              {}};
+  FrictionSettings s = settings(4);
+  s.reuse_pixels = 0.1;
+  std::vector<Contact> contacts = corners(scene, 40);
+  for (size_t i = 0; i < contacts.size(); ++i) contacts[i].key = i + 1;  // matched by key
+  GlPatchSampler sampler;
+  sampler.computeCoefficients(scene.bodies, contacts, s);
+  EXPECT_EQ(sampler.lastReusedCount(), 0);
+  // The contact points slide over both surfaces.
+  const double pixel = s.patch_width / s.patch_resolution;
+  std::vector<Contact> moved = contacts;
+  for (size_t i = 0; i < moved.size(); ++i)
+    moved[i].point += (i % 2 == 0 ? 0.05 : 2.0) * pixel * moved[i].t;
+  std::vector<Contact> fresh = moved;
+  sampler.computeCoefficients(scene.bodies, moved, s);
+  FrictionSettings every = s;
+  every.reuse_pixels = 0.0;
+  CpuPatchSampler().computeCoefficients(scene.bodies, fresh, every);
+  EXPECT_EQ(sampler.lastReusedCount(), 20);
+  for (size_t i = 0; i < moved.size(); ++i)
+    for (int k = 0; k < 4; ++k)
+      EXPECT_NEAR(moved[i].mu.mu[k], fresh[i].mu.mu[k], i % 2 == 0 ? 0.02 : kDefaultMuMax / 255.0)
+          << "contact " << i << " k " << k;
+  // Forgetting the history samples everything again.
+  sampler.forgetHistory();
+  sampler.computeCoefficients(scene.bodies, moved, s);
+  EXPECT_EQ(sampler.lastReusedCount(), 0);
+}
+
 TEST(GlPatchSampler, ReportsRendererAndRejectsBadAtlas) {
   GlPatchSampler sampler;
   EXPECT_FALSE(sampler.renderer().empty());
