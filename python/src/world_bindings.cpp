@@ -197,7 +197,9 @@ void bindWorld(py::module_& m) {
           },
           "Names of the bodies in scene order (the rows of the state arrays).")
       .def_property("positions", &positions, &setPositions,
-                    "(B, 3) float64: origin of each body's frame as the scene wrote it (m).")
+                    "(B, 3) float64: origin of each body's frame as the scene wrote it (m). "
+                    "Assigning any state array restarts from that state: the contact history "
+                    "of earlier steps is forgotten, so worlds set to one state evolve alike.")
       .def_property("orientations", &orientations, &setOrientations,
                     "(B, 4) float64: unit quaternion w, x, y, z of each body's frame.")
       .def_property("linear_velocities", &linearVelocities, &setLinearVelocities,
