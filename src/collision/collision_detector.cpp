@@ -45,6 +45,7 @@
 #include "collision/sdf_pairs.hpp"
 #include "collision/shape_record.hpp"
 #include "collision/signed_distance_field.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace asperity {
 
@@ -172,7 +173,8 @@ struct CollisionDetector::Impl {
     uint32_t index;
   };
   std::vector<SortKey> order;
-  std::vector<size_t> bucket_start;  // per body_a, for sortInto
+  std::vector<size_t> bucket_start;    // per body_a, for sortInto
+  std::vector<size_t> manifold_first;  // per manifold, its first point's slot (collectManifolds)
   uint64_t next_point_id = 1;
 
   ~Impl() { release(); }
@@ -251,15 +253,26 @@ struct CollisionDetector::Impl {
   }
 
   // Triangle lookup for dynamic meshes and hulls with triangles (built on first use).
-  const MeshFeatures* featuresOf(const ShapeRecord& r) {
+  // Dynamic triangle meshes and hulls made from meshes map contacts to mesh triangles.
+  static bool hasFeatures(const ShapeRecord& r) {
     const bool dynamic_mesh =
         r.shape.type == ShapeType::TriangleMesh && r.body_type == BodyType::Dynamic;
     const bool hull_mesh =
         r.shape.type == ShapeType::ConvexHull && !r.shape.mesh->triangles.empty();
-    if (!dynamic_mesh && !hull_mesh) return nullptr;
+    return dynamic_mesh || hull_mesh;
+  }
+  // The shape's mesh features, made on first use.
+  const MeshFeatures* featuresOf(const ShapeRecord& r) {
+    if (!hasFeatures(r)) return nullptr;
     auto& f = mesh_features[r.shape.mesh];
     if (!f) f = std::make_unique<MeshFeatures>(r.shape.mesh);
     return f.get();
+  }
+  // The same once made (featuresOf): a lookup that worker threads may share.
+  const MeshFeatures* madeFeaturesOf(const ShapeRecord& r) const {
+    if (!hasFeatures(r)) return nullptr;
+    const auto it = mesh_features.find(r.shape.mesh);
+    return it == mesh_features.end() ? nullptr : it->second.get();
   }
 
   // Deterministic order (SPEC: same input, same contacts): by (body_a, body_b, key), ties in
@@ -300,13 +313,14 @@ struct CollisionDetector::Impl {
     for (size_t i = 0; i < order.size(); ++i) out[i] = contacts[order[i].index];
   }
 
-  void collect(std::span<const Body> bodies);
+  void collect(std::span<const Body> bodies, const ThreadPool* pool);
 
   void build(std::span<const Body> bodies);
   void createWorld(size_t shape_count);
   void addBody(BodyId id, const Body& body);
-  void collectManifolds();
-  Contact manifoldContact(const btManifoldPoint& pt, const ShapeRecord& r0, const ShapeRecord& r1);
+  void collectManifolds(const ThreadPool* pool);
+  Contact manifoldContact(const btManifoldPoint& pt, const ShapeRecord& r0,
+                          const ShapeRecord& r1) const;
   void collectPlane(int r0, int r1);
   bool collectCylinderSide(int r0, int r1);
   void collectSwept();
@@ -371,28 +385,58 @@ void CollisionDetector::Impl::addBody(BodyId id, const Body& body) {
   }
 }
 
-void CollisionDetector::Impl::collectManifolds() {
-  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
-    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
-    const ShapeRecord& r0 = records[static_cast<size_t>(manifold->getBody0()->getUserIndex())];
-    const ShapeRecord& r1 = records[static_cast<size_t>(manifold->getBody1()->getUserIndex())];
-    for (int p = 0; p < manifold->getNumContacts(); ++p) {
-      btManifoldPoint& pt = manifold->getContactPoint(p);
-      // A persistent id per manifold point, kept by Bullet while the point is matched.
-      if (!pt.m_userPersistentData) {
+void CollisionDetector::Impl::collectManifolds(const ThreadPool* pool) {
+  const int count = dispatcher->getNumManifolds();
+  auto manifold = [&](size_t m) {
+    return dispatcher->getManifoldByIndexInternal(static_cast<int>(m));
+  };
+  auto record = [&](const btCollisionObject* o) -> const ShapeRecord& {
+    return records[static_cast<size_t>(o->getUserIndex())];
+  };
+  // First, in manifold order: each new point's persistent id (kept by Bullet while the point
+  // is matched; numbered the same on any thread count), mesh features, each manifold's slots.
+  manifold_first.resize(static_cast<size_t>(count) + 1);
+  const size_t base = contacts.size();
+  size_t total = 0;
+  for (size_t m = 0; m < static_cast<size_t>(count); ++m) {
+    btPersistentManifold* mf = manifold(m);
+    featuresOf(record(mf->getBody0()));
+    featuresOf(record(mf->getBody1()));
+    manifold_first[m] = total;
+    for (int p = 0; p < mf->getNumContacts(); ++p) {
+      btManifoldPoint& pt = mf->getContactPoint(p);
+      if (!pt.m_userPersistentData)
         pt.m_userPersistentData = reinterpret_cast<void*>(static_cast<uintptr_t>(next_point_id++));
-      }
-      Contact c = manifoldContact(pt, r0, r1);
-      if (c.phi < 0 && !settings.report_gaps) continue;
+    }
+    total += static_cast<size_t>(mf->getNumContacts());
+  }
+  // Then every manifold's points into its own slots, on the pool's threads.
+  contacts.resize(base + total);
+  const auto convert = [&](size_t m) {
+    const btPersistentManifold* mf = manifold(m);
+    const ShapeRecord& r0 = record(mf->getBody0());
+    const ShapeRecord& r1 = record(mf->getBody1());
+    for (int p = 0; p < mf->getNumContacts(); ++p) {
+      const btManifoldPoint& pt = mf->getContactPoint(p);
+      Contact& c = contacts[base + manifold_first[m] + static_cast<size_t>(p)];
+      c = manifoldContact(pt, r0, r1);
       c.key = contactKey(
           c, static_cast<uint64_t>(reinterpret_cast<uintptr_t>(pt.m_userPersistentData)));
-      contacts.push_back(c);
     }
-  }
+  };
+  if (pool)
+    pool->forEach(static_cast<size_t>(count), 32, convert);
+  else
+    for (size_t m = 0; m < static_cast<size_t>(count); ++m) convert(m);
+  // Gaps out unless reported, in order.
+  if (!settings.report_gaps)
+    contacts.erase(std::remove_if(contacts.begin() + static_cast<std::ptrdiff_t>(base),
+                                  contacts.end(), [](const Contact& c) { return c.phi < 0; }),
+                   contacts.end());
 }
 
 Contact CollisionDetector::Impl::manifoldContact(const btManifoldPoint& pt, const ShapeRecord& r0,
-                                                 const ShapeRecord& r1) {
+                                                 const ShapeRecord& r1) const {
   // Bullet's body 0 and 1 in A/B order.
   const bool swap = !isA(r0, r1);
   const ShapeRecord& ra = swap ? r1 : r0;
@@ -416,11 +460,11 @@ Contact CollisionDetector::Impl::manifoldContact(const btManifoldPoint& pt, cons
   c.witness_a = onTrueSurface(ra, c.witness_a, -c.normal, c.feature_a);
   c.witness_b = onTrueSurface(rb, c.witness_b, c.normal, c.feature_b);
   // Hull contacts of meshes: the mesh triangle nearest to the witness point.
-  if (const MeshFeatures* f = featuresOf(ra)) {
+  if (const MeshFeatures* f = madeFeaturesOf(ra)) {
     c.feature_a = f->nearestTriangle(ra.world.applyInverse(c.witness_a),
                                      ra.world.rotation.conjugate() * -c.normal);
   }
-  if (const MeshFeatures* f = featuresOf(rb)) {
+  if (const MeshFeatures* f = madeFeaturesOf(rb)) {
     c.feature_b = f->nearestTriangle(rb.world.applyInverse(c.witness_b),
                                      rb.world.rotation.conjugate() * c.normal);
   }
@@ -608,7 +652,7 @@ void CollisionDetector::Impl::build(std::span<const Body> bodies) {
   }
 }
 
-void CollisionDetector::Impl::collect(std::span<const Body> bodies) {
+void CollisionDetector::Impl::collect(std::span<const Body> bodies, const ThreadPool* pool) {
   if (bodies.size() != body_types.size()) {
     throw Error("collision: detect got " + std::to_string(bodies.size()) +
                 " bodies, setBodies had " + std::to_string(body_types.size()));
@@ -625,7 +669,7 @@ void CollisionDetector::Impl::collect(std::span<const Body> bodies) {
   plane_pairs.clear();
   sdf_pairs.clear();
   if (world) world->performDiscreteCollisionDetection();
-  if (dispatcher) collectManifolds();
+  if (dispatcher) collectManifolds(pool);
   for (const auto& [r0, r1] : plane_pairs) collectPlane(r0, r1);
   for (const auto& [r0, r1] : sdf_pairs) {
     sdfPairContacts(records[static_cast<size_t>(r0)], records[static_cast<size_t>(r1)], settings,
@@ -635,14 +679,15 @@ void CollisionDetector::Impl::collect(std::span<const Body> bodies) {
 }
 
 const std::vector<Contact>& CollisionDetector::detect(std::span<const Body> bodies) {
-  impl_->collect(bodies);
+  impl_->collect(bodies, nullptr);
   impl_->sortInto(impl_->sorted);
   return impl_->sorted;
 }
 
-void CollisionDetector::detect(std::span<const Body> bodies, std::vector<Contact>& out) {
+void CollisionDetector::detect(std::span<const Body> bodies, std::vector<Contact>& out,
+                               const ThreadPool* pool) {
   // Straight into the caller's vector: one pass over the contacts fewer than copying them.
-  impl_->collect(bodies);
+  impl_->collect(bodies, pool);
   impl_->sortInto(out);
 }
 

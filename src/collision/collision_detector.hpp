@@ -40,6 +40,8 @@
 
 namespace asperity {
 
+class ThreadPool;  // parallel/thread_pool.hpp
+
 // How concave mesh pairs are handled.
 enum class MeshPairMode {
   Auto,       // signed distances for dynamic closed meshes (see above)
@@ -73,8 +75,10 @@ class CollisionDetector {
   // non-dynamic bodies and pairs filtered by `ignore` are skipped. Contacts are sorted by
   // (body_a, body_b, key).
   const std::vector<Contact>& detect(std::span<const Body> bodies);
-  // The same contacts written into `out` (its previous contents replaced).
-  void detect(std::span<const Body> bodies, std::vector<Contact>& out);
+  // The same contacts written into `out` (its previous contents replaced); Bullet's contact
+  // points become contacts on `pool`'s threads when given (the same bits on any count).
+  void detect(std::span<const Body> bodies, std::vector<Contact>& out,
+              const ThreadPool* pool = nullptr);
   // Bodies joined by a joint may be excluded from colliding with each other.
   void ignorePair(BodyId a, BodyId b);
   // Time to the next detect (s; the world's dt). A shape that can close more than a quarter of

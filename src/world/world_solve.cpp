@@ -34,7 +34,7 @@ void World::collide() {
     bodies_changed_ = false;
   }
   collision_->setSpeculativeTime(settings_.dt);
-  collision_->detect(bodies_, contacts_);
+  collision_->detect(bodies_, contacts_, pool_.get());
 }
 
 FrameInputs World::frameInputs() {
