@@ -395,7 +395,7 @@ void CollisionDetector::Impl::collectManifolds(const ThreadPool* pool) {
   };
   // First, in manifold order: each new point's persistent id (kept by Bullet while the point
   // is matched; numbered the same on any thread count), mesh features, each manifold's slots.
-  manifold_first.resize(static_cast<size_t>(count) + 1);
+  manifold_first.resize(static_cast<size_t>(count));
   const size_t base = contacts.size();
   size_t total = 0;
   for (size_t m = 0; m < static_cast<size_t>(count); ++m) {
