@@ -175,6 +175,10 @@ struct CollisionDetector::Impl {
   std::vector<SortKey> order;
   std::vector<size_t> bucket_start;    // per body_a, for sortInto
   std::vector<size_t> manifold_first;  // per manifold, its first point's slot (collectManifolds)
+  // This call's worker threads (null: the calling thread only), and the box-box pairs whose
+  // narrowphase waits for them (deferBoxPair).
+  const ThreadPool* workers = nullptr;
+  std::vector<btBroadphasePair*> deferred;
   uint64_t next_point_id = 1;
 
   ~Impl() { release(); }
@@ -235,7 +239,49 @@ struct CollisionDetector::Impl {
       btCollisionDispatcher::defaultNearCallback(pair, d, gjk_axis);
       return;
     }
+    if (self->workers && self->isBoxPair(r0, r1)) {
+      self->deferBoxPair(pair, d);
+      return;
+    }
     btCollisionDispatcher::defaultNearCallback(pair, d, info);
+  }
+
+  bool isBoxPair(int r0, int r1) const {
+    return records[static_cast<size_t>(r0)].shape.type == ShapeType::Box &&
+           records[static_cast<size_t>(r1)].shape.type == ShapeType::Box;
+  }
+
+  // Bullet's defaultNearCallback up to the narrowphase: the pair's algorithm (and with it, for
+  // two boxes, its manifold) is made here, in pair order as before; processDeferred then runs
+  // the box-box narrowphase of every such pair, each writing only its own manifold.
+  void deferBoxPair(btBroadphasePair& pair, btCollisionDispatcher& d) {
+    auto* o0 = static_cast<btCollisionObject*>(pair.m_pProxy0->m_clientObject);
+    auto* o1 = static_cast<btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+    if (!d.needsCollision(o0, o1)) return;
+    if (!pair.m_algorithm) {
+      const btCollisionObjectWrapper w0(nullptr, o0->getCollisionShape(), o0,
+                                        o0->getWorldTransform(), -1, -1);
+      const btCollisionObjectWrapper w1(nullptr, o1->getCollisionShape(), o1,
+                                        o1->getWorldTransform(), -1, -1);
+      pair.m_algorithm = d.findAlgorithm(&w0, &w1, nullptr, BT_CONTACT_POINT_ALGORITHMS);
+    }
+    if (pair.m_algorithm) deferred.push_back(&pair);
+  }
+
+  void processDeferred() {
+    const btDispatcherInfo& info = world->getDispatchInfo();
+    workers->forEach(deferred.size(), 16, [&](size_t k) {
+      btBroadphasePair& pair = *deferred[k];
+      auto* o0 = static_cast<btCollisionObject*>(pair.m_pProxy0->m_clientObject);
+      auto* o1 = static_cast<btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+      const btCollisionObjectWrapper w0(nullptr, o0->getCollisionShape(), o0,
+                                        o0->getWorldTransform(), -1, -1);
+      const btCollisionObjectWrapper w1(nullptr, o1->getCollisionShape(), o1,
+                                        o1->getWorldTransform(), -1, -1);
+      btManifoldResult result(&w0, &w1);
+      pair.m_algorithm->processCollision(&w0, &w1, info, &result);
+    });
+    deferred.clear();
   }
 
   void release() {
@@ -318,7 +364,7 @@ struct CollisionDetector::Impl {
   void build(std::span<const Body> bodies);
   void createWorld(size_t shape_count);
   void addBody(BodyId id, const Body& body);
-  void collectManifolds(const ThreadPool* pool);
+  void collectManifolds();
   Contact manifoldContact(const btManifoldPoint& pt, const ShapeRecord& r0,
                           const ShapeRecord& r1) const;
   void collectPlane(int r0, int r1);
@@ -385,7 +431,7 @@ void CollisionDetector::Impl::addBody(BodyId id, const Body& body) {
   }
 }
 
-void CollisionDetector::Impl::collectManifolds(const ThreadPool* pool) {
+void CollisionDetector::Impl::collectManifolds() {
   const int count = dispatcher->getNumManifolds();
   auto manifold = [&](size_t m) {
     return dispatcher->getManifoldByIndexInternal(static_cast<int>(m));
@@ -424,8 +470,8 @@ void CollisionDetector::Impl::collectManifolds(const ThreadPool* pool) {
           c, static_cast<uint64_t>(reinterpret_cast<uintptr_t>(pt.m_userPersistentData)));
     }
   };
-  if (pool)
-    pool->forEach(static_cast<size_t>(count), 32, convert);
+  if (workers)
+    workers->forEach(static_cast<size_t>(count), 32, convert);
   else
     for (size_t m = 0; m < static_cast<size_t>(count); ++m) convert(m);
   // Gaps out unless reported, in order.
@@ -668,8 +714,10 @@ void CollisionDetector::Impl::collect(std::span<const Body> bodies, const Thread
   contacts.clear();
   plane_pairs.clear();
   sdf_pairs.clear();
+  workers = pool;
   if (world) world->performDiscreteCollisionDetection();
-  if (dispatcher) collectManifolds(pool);
+  if (!deferred.empty()) processDeferred();
+  if (dispatcher) collectManifolds();
   for (const auto& [r0, r1] : plane_pairs) collectPlane(r0, r1);
   for (const auto& [r0, r1] : sdf_pairs) {
     sdfPairContacts(records[static_cast<size_t>(r0)], records[static_cast<size_t>(r1)], settings,
