@@ -2,9 +2,7 @@
 // generators and their parameters. Generator parameters are dynamic (`--sx 0.1`), collected
 // from CLI11's extras and checked by generateNormalMap.
 #include <cstdio>
-#include <fstream>
 #include <iostream>
-#include <iterator>
 #include <memory>
 
 #include <nlohmann/json.hpp>
@@ -96,13 +94,9 @@ void runTexture(const TextureOptions& opt, const std::vector<std::string>& extra
 void runInspect(const std::string& file, bool json) {
   // Decoded as OpenGL; the verdict says whether DirectX fits better.
   NormalMapStats stats;
-  std::ifstream in(file, std::ios::binary | std::ios::ate);
-  if (!in) throw Error("texture inspect: cannot open '" + file + "'");
-  std::vector<uint8_t> bytes(static_cast<size_t>(std::max<std::streamoff>(in.tellg(), 0)));
-  in.seekg(0);
-  if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size())))
-    throw Error("texture inspect: cannot read '" + file + "'");
-  const NormalMap map = decodeNormalMap(bytes, file, GreenConvention::OpenGL, 1.0, &stats);
+  const std::optional<std::vector<uint8_t>> bytes = readFileBytes(file);
+  if (!bytes) throw Error("texture inspect: cannot open '" + file + "'");
+  const NormalMap map = decodeNormalMap(*bytes, file, GreenConvention::OpenGL, 1.0, &stats);
   const GreenFit fit = judgeGreenConvention(map);
   const double slope = meanSlope(map);
   // The whole-texture box cone against a flat partner (as `asperity cone FILE`).

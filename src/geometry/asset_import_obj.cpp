@@ -3,8 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <optional>
 
 #include "asperity/error.hpp"
 #include "asperity/geometry/mesh_io.hpp"
@@ -71,9 +70,9 @@ std::string resolveBeside(const std::string& dir, const std::string& ref) {
 
 std::vector<uint8_t> readAssetFile(const std::string& path, const std::string& asset,
                                    const std::string& part) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(asset + ": " + part + " cannot be read (" + path + ")");
-  return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  std::optional<std::vector<uint8_t>> bytes = readFileBytes(path);
+  if (!bytes) throw Error(asset + ": " + part + " cannot be read (" + path + ")");
+  return std::move(*bytes);
 }
 
 NormalMap decodeAssetNormalMap(const std::vector<uint8_t>& bytes, const std::string& asset,

@@ -8,12 +8,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <memory>
+#include <optional>
+#include <utility>
 
 #include <zlib.h>
 
 #include "asperity/error.hpp"
+#include "asperity/texture/png_io.hpp"
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wconversion"
@@ -100,20 +102,11 @@ uint32_t crc32(const uint8_t* data, size_t size, uint32_t crc) {
 }
 
 std::vector<uint8_t> readFile(const std::string& path) {
-  // A directory opens as a stream on Linux and only fails (by throwing) when read.
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    fail(path, "cannot open (missing or unreadable)");
-  }
-  // One read of the whole file (a 4096 x 4096 map is 50 MB).
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  in.seekg(0, std::ios::beg);
-  std::vector<uint8_t> bytes(size > 0 ? static_cast<size_t>(size) : 0);
-  if (size < 0 || !in.read(reinterpret_cast<char*>(bytes.data()), size)) fail(path, "cannot be read");
-  return bytes;
+  std::optional<std::vector<uint8_t>> bytes = readFileBytes(path);
+  if (!bytes) fail(path, "cannot open (missing or unreadable)");
+  return std::move(*bytes);
 }
 
 Header inspect(const std::vector<uint8_t>& bytes, const std::string& path, int max_size) {

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include "asperity/error.hpp"
@@ -71,6 +73,20 @@ void warnInvalidTexels(const std::string& name, const NormalMapStats& stats) {
   const std::string shown = rounded == 0 ? "< 1" : std::to_string(rounded);
   std::cerr << "asperity: warning: " << name << ": " << shown
             << " % of texels are not unit normals; treated as flat\n";
+}
+
+std::optional<std::vector<uint8_t>> readFileBytes(const std::string& path) {
+  // A directory opens as a stream on Linux; its size is not a file's.
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) return std::nullopt;
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) return std::nullopt;
+  const std::streamoff size = in.tellg();
+  if (size < 0) return std::nullopt;
+  std::vector<uint8_t> bytes(static_cast<size_t>(size));
+  in.seekg(0);
+  if (!in.read(reinterpret_cast<char*>(bytes.data()), size)) return std::nullopt;
+  return bytes;
 }
 
 NormalMap loadNormalMapPng(const std::string& path, GreenConvention green, NormalMapStats* stats) {

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,10 @@ NormalMap loadNormalMapPng(const std::string& path, GreenConvention green = Gree
 NormalMap decodeNormalMap(const std::vector<uint8_t>& bytes, const std::string& name,
                           GreenConvention green = GreenConvention::OpenGL, double scale = 1.0,
                           NormalMapStats* stats = nullptr);
+// A whole file (an image, an asset's texture) in one read; std::nullopt when it is missing, a
+// directory or unreadable. Callers name the file and the part in their own messages.
+std::optional<std::vector<uint8_t>> readFileBytes(const std::string& path);
+
 void saveNormalMapPng(const NormalMap& map, const std::string& path,
                       const PngWriteOptions& options = {});
 
