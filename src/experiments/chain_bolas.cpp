@@ -1,12 +1,11 @@
 // Chain bolas (Sec. 5.1, Figs. 10 and 11): a chain thrown at a rough and at a smooth rod.
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
 
 #include "experiment_support.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace asperity::experiments {
 
@@ -81,14 +80,16 @@ Vec3 centreOfMass(const Recording& rec, size_t k) {
 }
 
 // Final heights of the chain's centre of mass for the ten jittered throws of one scene, run
-// side by side (each world is independent, so the numbers do not depend on the threads).
+// side by side on the run's threads (every core unless it says; each world is independent, so
+// the numbers do not depend on the threads).
 Heights jitteredHeights(const SceneRun& run, const RunOptions& options) {
   const SceneDesc scene = loadExperimentScene(run.file, options);
   const Vec3 axis = rodAxis(scene, run.file);
   RunOptions quiet = options;
   quiet.record_every = 1 << 30;  // only the first and the last state
   Heights heights{};
-  tbb::parallel_for(size_t{0}, kJitters.size(), [&](size_t i) {
+  const ThreadPool pool(options.threads.value_or(0));
+  pool.forEach(kJitters.size(), 1, [&](size_t i) {
     SceneDesc jittered = scene;
     applyJitter(jittered, kJitters[i], axis);
     const Recording rec = simulate(jittered, run.file, run.seconds, quiet);

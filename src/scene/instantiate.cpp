@@ -120,9 +120,10 @@ BodyDesc resolveMeshes(const SceneDesc& scene, size_t index, scene::ResourceCach
     Surface& s = shape.surface;
     if (!s.normal_map && s.source.normal_map_file.empty() && s.source.generator.name.empty())
       s.normal_map = asset->material.normal_map;
-    if (m.asset_base_color && asset->material.has_base_color)
-      s.base_color = asset->material.base_color;
-    if (m.asset_base_color) s.base_color_texture = asset->material.base_color_image;
+    if (m.asset_base_color) {
+      if (asset->material.has_base_color) s.base_color = asset->material.base_color;
+      s.base_color_texture = asset->material.base_color_image;
+    }
   }
   return desc;
 }
