@@ -45,9 +45,9 @@ PatchReuse::Key PatchReuse::keyOf(const Contact& c) {
 }
 
 const PatchReuse::Sample* PatchReuse::find(const Key& key) const {
-  const auto it = std::lower_bound(samples_.begin(), samples_.end(), key,
-                                   [](const Entry& e, const Key& k) { return e.first < k; });
-  return it != samples_.end() && it->first == key ? &it->second : nullptr;
+  const auto it = std::lower_bound(keys_.begin(), keys_.end(), key);
+  return it != keys_.end() && *it == key ? &samples_[static_cast<size_t>(it - keys_.begin())]
+                                         : nullptr;
 }
 
 PatchReuse::Sample PatchReuse::record(std::span<const Body> bodies, const Contact& c) const {
@@ -65,7 +65,10 @@ PatchReuse::Sample PatchReuse::record(std::span<const Body> bodies, const Contac
 std::vector<uint8_t> PatchReuse::reuse(std::span<const Body> bodies, std::span<Contact> contacts,
                                        const FrictionSettings& settings) {
   std::vector<uint8_t> reused(contacts.size(), 0);
-  if (!sameSettings(settings, settings_)) samples_.clear();
+  if (!sameSettings(settings, settings_)) {
+    keys_.clear();
+    samples_.clear();
+  }
   settings_ = settings;
   tolerance_ = settings.reuse_pixels * settings.patch_width / settings.patch_resolution;
   if (!(tolerance_ > 0.0)) return reused;
@@ -90,23 +93,25 @@ std::vector<uint8_t> PatchReuse::reuse(std::span<const Body> bodies, std::span<C
 
 void PatchReuse::remember(std::span<const Body> bodies, std::span<const Contact> contacts,
                           std::span<const uint8_t> reused) {
-  if (!(tolerance_ > 0.0)) {
-    samples_.clear();
-    return;
+  keys_.swap(next_keys_);
+  samples_.swap(next_samples_);
+  keys_.clear();
+  samples_.clear();
+  if (!(tolerance_ > 0.0)) return;
+  // By key, then contact order: of two contacts with one identity the first is kept.
+  order_.clear();
+  for (size_t i = 0; i < contacts.size(); ++i)
+    order_.emplace_back(keyOf(contacts[i]), static_cast<uint32_t>(i));
+  std::sort(order_.begin(), order_.end());
+  for (const auto& [key, i] : order_) {
+    if (!keys_.empty() && keys_.back() == key) continue;
+    // The last step's records are in next_ now; a reused contact keeps its original one.
+    const auto old = std::lower_bound(next_keys_.begin(), next_keys_.end(), key);
+    const bool keep = reused[i] && old != next_keys_.end() && *old == key;
+    keys_.push_back(key);
+    samples_.push_back(keep ? next_samples_[static_cast<size_t>(old - next_keys_.begin())]
+                            : record(bodies, contacts[i]));
   }
-  next_.clear();
-  for (size_t i = 0; i < contacts.size(); ++i) {
-    const Key key = keyOf(contacts[i]);
-    const Sample* old = reused[i] ? find(key) : nullptr;
-    next_.emplace_back(key, old ? *old : record(bodies, contacts[i]));
-  }
-  // By key; of two contacts with one identity the first is kept.
-  std::stable_sort(next_.begin(), next_.end(),
-                   [](const Entry& x, const Entry& y) { return x.first < y.first; });
-  next_.erase(std::unique(next_.begin(), next_.end(),
-                          [](const Entry& x, const Entry& y) { return x.first == y.first; }),
-              next_.end());
-  std::swap(samples_, next_);
 }
 
 }  // namespace asperity::patch

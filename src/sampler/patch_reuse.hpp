@@ -43,13 +43,16 @@ class PatchReuse {
     int covered_pixels = 0;
     bool fallback = false;
   };
-  using Entry = std::pair<Key, Sample>;
   static Key keyOf(const Contact& c);
   Sample record(std::span<const Body> bodies, const Contact& c) const;
   const Sample* find(const Key& key) const;
 
-  // Sorted by key; two buffers swapped each step, so that a warm sampler does not allocate.
-  std::vector<Entry> samples_, next_;
+  // keys_[i] is samples_[i]'s identity, sorted; the keys are apart from the (large) samples so
+  // that a lookup touches few cache lines. The next_ buffers are swapped in each step and the
+  // sort moves only (key, contact index) pairs, so that a warm sampler does not allocate.
+  std::vector<Key> keys_, next_keys_;
+  std::vector<Sample> samples_, next_samples_;
+  std::vector<std::pair<Key, uint32_t>> order_;
   FrictionSettings settings_;  // those the samples were taken with
   double tolerance_ = 0.0;     // m: reuse_pixels patch pixels
 };
