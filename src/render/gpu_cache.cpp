@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 namespace asperity::render {
@@ -50,15 +51,24 @@ void uploadMesh(const ShapeMesh& mesh, GpuMesh& gpu) {
 }
 
 // Mipmaps, repeat, trilinear and (where available) anisotropic filtering for the bound texture.
+// Anisotropic filtering keeps grazing views of rough ground sharp, except on Mesa's llvmpipe:
+// there (Mesa 22.3) a normal-mapped face seen almost exactly edge-on with MSAA took minutes to
+// draw (renderer_test.cpp, EdgeOnNormalMappedFaceDrawsPromptly).
+bool anisotropicFiltering() {
+  if (epoxy_gl_version() < 46 && !epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))
+    return false;
+  const GLubyte* renderer = glGetString(GL_RENDERER);
+  return renderer == nullptr ||
+         std::strstr(reinterpret_cast<const char*>(renderer), "llvmpipe") == nullptr;
+}
+
 void setSampling() {
   glGenerateMipmap(GL_TEXTURE_2D);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  // Anisotropic filtering keeps grazing views of rough ground sharp.
-  if (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))
-    glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 4.0f);
+  if (anisotropicFiltering()) glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, 4.0f);
 }
 
 }  // namespace
