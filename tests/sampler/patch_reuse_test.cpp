@@ -36,8 +36,8 @@ double reusedShare(World& world, int steps) {
   return contacts > 0 ? reused / contacts : 0.0;
 }
 
-TEST(PatchReuse, OffByDefaultAndAtZero) {
-  EXPECT_EQ(FrictionSettings{}.reuse_pixels, 0.0);
+TEST(PatchReuse, OnByDefaultAndOffAtZero) {
+  EXPECT_EQ(FrictionSettings{}.reuse_pixels, 0.1);
   auto world = scene("stacking.json", 0.0);
   EXPECT_EQ(reusedShare(*world, 100), 0.0);
 }

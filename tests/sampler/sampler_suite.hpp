@@ -100,6 +100,9 @@ inline FrictionSettings settings(int n = 4, int r = 16, double w = 0.02, double 
   s.patch_resolution = r;
   s.patch_width = w;
   s.mu0 = mu0;
+  // One provider samples unrelated scenes whose contacts share an identity: every call
+  // samples anew instead of keeping the last scene's sample.
+  s.reuse_pixels = 0.0;
   return s;
 }
 

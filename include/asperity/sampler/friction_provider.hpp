@@ -23,9 +23,12 @@ struct FrictionSettings {
   float mu_max = 4.0f;        // clamp of the ploughing term
   double patch_width = 0.02;  // w (m)
   int patch_resolution = 16;  // R (pixels per side)
-  // Patch coherence (cpu sampler): a contact whose surfaces moved by less than this many patch
-  // pixels (w / R each) since its patch was sampled keeps that sample. 0: sample every step.
-  double reuse_pixels = 0.0;
+  // Patch coherence (cpu and gl samplers): a contact whose surfaces moved by less than this
+  // many patch pixels (w / R each) since its patch was sampled keeps that sample; a kept
+  // sample's mu is within about 0.005 of a fresh one (docs/samplers.md). 0: sample every call.
+  // Samples are matched across calls by the contact's identity (bodies, shapes, key): after
+  // changing a body's shapes or surfaces, call forgetHistory() (World::forgetContactHistory).
+  double reuse_pixels = 0.1;
 };
 
 class ThreadPool;  // the world's worker threads (internal)

@@ -155,6 +155,8 @@ class World {
   int64_t stepCount() const { return steps_; }
 
   std::span<const Body> bodies() const { return bodies_; }
+  // After changing a body's shapes or surfaces through this, call forgetContactHistory():
+  // kept patch samples (FrictionSettings::reuse_pixels) do not see such changes.
   Body& body(BodyId id);
   const Body& body(BodyId id) const;
   // The description a body was created from (scenes save it back).
@@ -178,7 +180,8 @@ class World {
   // persistent contact points, the solver's warm-start impulses, the friction provider's kept
   // samples and the last contacts. Call it after setting bodies' poses or velocities to restart
   // from them: from then on the world evolves exactly (bit for bit) as any world of the same
-  // bodies, joints and settings restarted from that state, whatever either did before.
+  // bodies, joints and settings restarted from that state, whatever either did before. Call it
+  // too after changing bodies' shapes or surfaces.
   void forgetContactHistory();
   // FNV-1a over the bit patterns of every body's pose and velocities (determinism checks).
   uint64_t stateHash() const;
