@@ -589,13 +589,19 @@ bool CollisionDetector::Impl::collectCylinderSide(int r0, int r1) {
 // close the gap but not pass through a thin wall, a rod or another body (docs/collision.md).
 void CollisionDetector::Impl::collectSwept() {
   if (speculative_time <= 0.0 || !world) return;
+  // The pairs already in contact, gathered only once a fast shape needs them (a resting pile
+  // has none, and thousands of contacts).
   std::set<std::pair<BodyId, BodyId>> touching;
-  for (const Contact& c : contacts) touching.insert({c.body_a, c.body_b});
+  bool gathered = false;
   for (size_t i = 0; i < records.size(); ++i) {
     const ShapeRecord& r = records[i];
     if (r.body_type != BodyType::Dynamic || !r.bullet.shape->isConvex()) continue;
     const Vec3 displacement = speculative_time * r.velocity;
     if (displacement.norm() <= 0.25 * r.size) continue;
+    if (!gathered) {
+      for (const Contact& c : contacts) touching.insert({c.body_a, c.body_b});
+      gathered = true;
+    }
     const int self = static_cast<int>(i);
     auto accepts = [this, self](int other) {
       return !isPlanePair(self, other) && shouldCollide(self, other);
