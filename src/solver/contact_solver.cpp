@@ -121,32 +121,43 @@ void ContactSolver::prepareContact(const Contact& c, ContactRow& row) const {
   row.lambda_n = row.lambda_t = row.lambda_b = row.lambda_p = 0.0;
 }
 
-void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction) {
+void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction,
+                                const ThreadPool* pool) {
   friction_ = friction;
-  rows_.resize(contacts.size());
-  std::visit([](auto& limits) { limits.clear(); }, limits_);
-  size_t cursor = 0;
-  for (size_t i = 0; i < contacts.size(); ++i) {
-    const Contact& c = contacts[i];
-    ContactRow& row = rows_[i];
-    prepareContact(c, row);
-    // The limit surface chosen in the settings (SPEC 4), built from the contact.
-    if (friction) {
-      std::visit(
-          [&](auto& limits) {
-            using Limit = typename std::decay_t<decltype(limits)>::value_type;
-            limits.push_back(Limit::fromContact(c.mu, settings_.coulomb_mu));
-          },
-          limits_);
-    }
-    if (settings_.warm_starting) {
-      if (const Cached* cached = findCached(c, cursor)) warmStartRow(*cached, row, i);
-    }
+  const size_t n = contacts.size();
+  rows_.resize(n);
+  std::visit(
+      [&](auto& limits) {
+        limits.clear();
+        if (friction) limits.resize(n);
+      },
+      limits_);
+  // Each contact's row and the limit surface the settings choose (SPEC 4), from the contact.
+  const auto make = [&](size_t i) {
+    prepareContact(contacts[i], rows_[i]);
+    if (!friction) return;
+    std::visit(
+        [&](auto& limits) {
+          using Limit = typename std::decay_t<decltype(limits)>::value_type;
+          limits[i] = Limit::fromContact(contacts[i].mu, settings_.coulomb_mu);
+        },
+        limits_);
+  };
+  if (pool && n >= kParallelRows)
+    pool->forEach(n, 64, make);
+  else
+    for (size_t i = 0; i < n; ++i) make(i);
+  if (settings_.warm_starting) {
+    // In contact order: the walking cursor of findCached decides which of equal keys match.
+    size_t cursor = 0;
+    for (size_t i = 0; i < n; ++i)
+      if (const Cached* cached = findCached(contacts[i], cursor))
+        warmStartRow(*cached, rows_[i], i);
   }
-  scheduleRows();
+  scheduleRows(pool);
 }
 
-void ContactSolver::scheduleRows() {
+void ContactSolver::scheduleRows(const ThreadPool* pool) {
   // The sweep order: input order, except that a row sharing a moving body with the row just
   // before it waits in a FIFO until a row without that dependency has gone first. Consecutive
   // rows then rarely touch the same velocities, so the processor overlaps them (the four
@@ -175,28 +186,32 @@ void ContactSolver::scheduleRows() {
     }
   }
   while (head < pending_.size()) emit(pending_[head++]);
-  storeInSweepOrder();
+  storeInSweepOrder(pool);
 }
 
-void ContactSolver::storeInSweepOrder() {
+void ContactSolver::storeInSweepOrder(const ThreadPool* pool) {
   // Rows and limits stored in sweep order: each sweep streams through memory front to back,
   // so the prefetcher hides the misses once the rows outgrow the cache. slot_ maps a contact
-  // to its row.
+  // to its row. Each slot is written once, so the copies may run on the pool.
   const size_t n = rows_.size();
   slot_.resize(n);
   sorted_.resize(n);
-  for (size_t k = 0; k < n; ++k) {
+  const auto copy = [&](auto&& each) {
+    if (pool && n >= kParallelRows)
+      pool->forEach(n, 256, each);
+    else
+      for (size_t k = 0; k < n; ++k) each(k);
+  };
+  copy([&](size_t k) {
     const size_t i = static_cast<size_t>(order_[k]);
     slot_[i] = static_cast<int>(k);
     sorted_[k] = rows_[i];
-  }
+  });
   rows_.swap(sorted_);
   auto permute = [&](auto& limits) {
     if (limits.size() != n) return;
-    std::remove_reference_t<decltype(limits)> sorted;
-    sorted.reserve(n);
-    for (size_t k = 0; k < n; ++k)
-      sorted.push_back(std::move(limits[static_cast<size_t>(order_[k])]));
+    std::remove_reference_t<decltype(limits)> sorted(n);
+    copy([&](size_t k) { sorted[k] = std::move(limits[static_cast<size_t>(order_[k])]); });
     limits.swap(sorted);
   };
   std::visit(permute, limits_);

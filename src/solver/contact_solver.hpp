@@ -61,8 +61,11 @@ class ContactSolver {
   // Joint rows (anchors in world from the bodies' poses).
   void setJoints(std::span<const SolverJoint> joints);
   // Contact rows. With friction, contacts carry their frame (t, b) and mu; without, only the
-  // normal rows are solved (frame mode Auto's first pass).
-  void setContacts(std::span<const Contact> contacts, bool friction);
+  // normal rows are solved (frame mode Auto's first pass). Each contact's row and limit surface
+  // are made on `pool`'s threads when given (each writes only its own slot: the same rows on
+  // any thread count); warm starting and the sweep order follow on the calling thread.
+  void setContacts(std::span<const Contact> contacts, bool friction,
+                   const ThreadPool* pool = nullptr);
   // Warm start (first call after setContacts only) and `iterations` PGS sweeps. The rows fall
   // into islands that share no moving body; each island is swept on its own (on `pool`'s
   // threads when given), its rows in the global sweep order, which gives exactly the bits of
@@ -135,8 +138,8 @@ class ContactSolver {
   void prepareContact(const Contact& c, ContactRow& row) const;
   const Cached* findCached(const Contact& c, size_t& cursor) const;
   void warmStartRow(const Cached& cached, ContactRow& row, size_t index) const;
-  void scheduleRows();
-  void storeInSweepOrder();
+  void scheduleRows(const ThreadPool* pool);
+  void storeInSweepOrder(const ThreadPool* pool);
   void warmStart();
   void warmStartJoints();
   void addAngularRow(int a, int b, int joint, int slot, const Vec3& u, double target);
