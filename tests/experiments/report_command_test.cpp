@@ -3,6 +3,7 @@
 // experiment_outcomes_test.cpp.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -37,6 +38,25 @@ TEST(ReportCommand, WritesAPageWithOutcomePlotsAndTableOne) {
   EXPECT_EQ(html.find("<script"), std::string::npos);
   EXPECT_EQ(html.find("<link"), std::string::npos);
   EXPECT_NE(r.out.find("1 of 1 experiments reproduced"), std::string::npos) << r.out;
+}
+
+// The whole report, as `asperity report` writes it: every experiment reproduces with the
+// default settings and every scene's frame is rendered (stacking_forward's frame once hung
+// Mesa's llvmpipe: renderer_test.cpp, EdgeOnNormalMappedFaceDrawsPromptly).
+TEST(ReportCommand, EveryExperimentReproducesWithItsFrames) {
+  const std::string dir = test::tempDir("report_all");
+  const auto r =
+      test::runCli({"report", "--out", dir, "--scenes", test::sourcePath("scenes")});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("8 of 8 experiments reproduced"), std::string::npos) << r.out;
+  for (const char* frame :
+       {"boxes_on_materials", "sawtooth_plane", "sawtooth_plane_rotated", "stacking",
+        "stacking_forward", "crawling_worm", "crawling_worm_reversed", "chain_bolas_rough",
+        "chain_bolas_smooth", "tumbling_bunnies", "nut_bolt", "nut_bolt_push"}) {
+    std::error_code missing;
+    const auto bytes = std::filesystem::file_size(dir + "/report/" + frame + ".png", missing);
+    EXPECT_TRUE(!missing && bytes > 1000) << frame;
+  }
 }
 
 TEST(ReportCommand, UnknownExperimentIsAnErrorListingTheKnownOnes) {
