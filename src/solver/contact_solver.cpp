@@ -154,10 +154,11 @@ void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction
       if (const Cached* cached = findCached(contacts[i], cursor))
         warmStartRow(*cached, rows_[i], i);
   }
-  scheduleRows(pool);
+  scheduleRows();
+  storeInSweepOrder(pool);
 }
 
-void ContactSolver::scheduleRows(const ThreadPool* pool) {
+void ContactSolver::scheduleRows() {
   // The sweep order: input order, except that a row sharing a moving body with the row just
   // before it waits in a FIFO until a row without that dependency has gone first. Consecutive
   // rows then rarely touch the same velocities, so the processor overlaps them (the four
@@ -186,7 +187,6 @@ void ContactSolver::scheduleRows(const ThreadPool* pool) {
     }
   }
   while (head < pending_.size()) emit(pending_[head++]);
-  storeInSweepOrder(pool);
 }
 
 void ContactSolver::storeInSweepOrder(const ThreadPool* pool) {

@@ -138,7 +138,7 @@ class ContactSolver {
   void prepareContact(const Contact& c, ContactRow& row) const;
   const Cached* findCached(const Contact& c, size_t& cursor) const;
   void warmStartRow(const Cached& cached, ContactRow& row, size_t index) const;
-  void scheduleRows(const ThreadPool* pool);
+  void scheduleRows();
   void storeInSweepOrder(const ThreadPool* pool);
   void warmStart();
   void warmStartJoints();
