@@ -174,7 +174,8 @@ struct CollisionDetector::Impl {
   };
   std::vector<SortKey> order;
   std::vector<size_t> bucket_start;    // per body_a, for sortInto
-  std::vector<size_t> manifold_first;  // per manifold, its first point's slot (collectManifolds)
+  // Per manifold (collectManifolds), then summed: its first point's slot, its first new id.
+  std::vector<size_t> manifold_first, manifold_new;
   // This call's worker threads (null: the calling thread only), and the box-box pairs whose
   // narrowphase waits for them (deferBoxPair).
   const ThreadPool* workers = nullptr;
@@ -356,7 +357,11 @@ struct CollisionDetector::Impl {
       begin = end;
     }
     out.resize(contacts.size());
-    for (size_t i = 0; i < order.size(); ++i) out[i] = contacts[order[i].index];
+    const auto copy = [&](size_t i) { out[i] = contacts[order[i].index]; };
+    if (workers)
+      workers->forEach(order.size(), 256, copy);
+    else
+      for (size_t i = 0; i < order.size(); ++i) copy(i);
   }
 
   void collect(std::span<const Body> bodies, const ThreadPool* pool);
@@ -439,41 +444,60 @@ void CollisionDetector::Impl::collectManifolds() {
   auto record = [&](const btCollisionObject* o) -> const ShapeRecord& {
     return records[static_cast<size_t>(o->getUserIndex())];
   };
-  // First, in manifold order: each new point's persistent id (kept by Bullet while the point
-  // is matched; numbered the same on any thread count), mesh features, each manifold's slots.
-  manifold_first.resize(static_cast<size_t>(count));
+  // Mesh features are made on first use, on this thread (hulls and dynamic meshes only).
+  if (std::any_of(records.begin(), records.end(), hasFeatures)) {
+    for (size_t m = 0; m < static_cast<size_t>(count); ++m) {
+      featuresOf(record(manifold(m)->getBody0()));
+      featuresOf(record(manifold(m)->getBody1()));
+    }
+  }
+  // Each manifold's points and new points (without a persistent id yet), counted per manifold
+  // on the pool, then summed in manifold order: a manifold's first slot and its first new id.
+  const auto each = [&](size_t n, size_t grain, const auto& body) {
+    if (workers)
+      workers->forEach(n, grain, body);
+    else
+      for (size_t m = 0; m < n; ++m) body(m);
+  };
+  const size_t manifolds = static_cast<size_t>(count);
+  manifold_first.resize(manifolds + 1);
+  manifold_new.resize(manifolds + 1);
+  each(manifolds, 64, [&](size_t m) {
+    const btPersistentManifold* mf = manifold(m);
+    size_t fresh = 0;
+    for (int p = 0; p < mf->getNumContacts(); ++p)
+      fresh += mf->getContactPoint(p).m_userPersistentData == nullptr;
+    manifold_first[m + 1] = static_cast<size_t>(mf->getNumContacts());
+    manifold_new[m + 1] = fresh;
+  });
+  manifold_first[0] = manifold_new[0] = 0;
+  for (size_t m = 0; m < manifolds; ++m) {
+    manifold_first[m + 1] += manifold_first[m];
+    manifold_new[m + 1] += manifold_new[m];
+  }
+  // Then every manifold on the pool: its new points numbered in order (the ids a serial pass
+  // in manifold order would give, on any thread count; Bullet keeps them while a point is
+  // matched), and its points converted into its own slots.
   const size_t base = contacts.size();
-  size_t total = 0;
-  for (size_t m = 0; m < static_cast<size_t>(count); ++m) {
+  const uint64_t first_id = next_point_id;
+  next_point_id += manifold_new[manifolds];
+  contacts.resize(base + manifold_first[manifolds]);
+  const auto convert = [&](size_t m) {
     btPersistentManifold* mf = manifold(m);
-    featuresOf(record(mf->getBody0()));
-    featuresOf(record(mf->getBody1()));
-    manifold_first[m] = total;
+    const ShapeRecord& r0 = record(mf->getBody0());
+    const ShapeRecord& r1 = record(mf->getBody1());
+    uint64_t id = first_id + manifold_new[m];
     for (int p = 0; p < mf->getNumContacts(); ++p) {
       btManifoldPoint& pt = mf->getContactPoint(p);
       if (!pt.m_userPersistentData)
-        pt.m_userPersistentData = reinterpret_cast<void*>(static_cast<uintptr_t>(next_point_id++));
-    }
-    total += static_cast<size_t>(mf->getNumContacts());
-  }
-  // Then every manifold's points into its own slots, on the pool's threads.
-  contacts.resize(base + total);
-  const auto convert = [&](size_t m) {
-    const btPersistentManifold* mf = manifold(m);
-    const ShapeRecord& r0 = record(mf->getBody0());
-    const ShapeRecord& r1 = record(mf->getBody1());
-    for (int p = 0; p < mf->getNumContacts(); ++p) {
-      const btManifoldPoint& pt = mf->getContactPoint(p);
+        pt.m_userPersistentData = reinterpret_cast<void*>(static_cast<uintptr_t>(id++));
       Contact& c = contacts[base + manifold_first[m] + static_cast<size_t>(p)];
       c = manifoldContact(pt, r0, r1);
       c.key = contactKey(
           c, static_cast<uint64_t>(reinterpret_cast<uintptr_t>(pt.m_userPersistentData)));
     }
   };
-  if (workers)
-    workers->forEach(static_cast<size_t>(count), 32, convert);
-  else
-    for (size_t m = 0; m < static_cast<size_t>(count); ++m) convert(m);
+  each(manifolds, 32, convert);
   // Gaps out unless reported, in order.
   if (!settings.report_gaps)
     contacts.erase(std::remove_if(contacts.begin() + static_cast<std::ptrdiff_t>(base),
