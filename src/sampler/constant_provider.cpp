@@ -1,6 +1,8 @@
 // The constant friction stage: mu_d = mu0 in every direction of every contact.
 #include "asperity/sampler/constant_provider.hpp"
 
+#include "parallel/thread_pool.hpp"
+
 namespace asperity {
 
 void ConstantProvider::computeCoefficients(std::span<const Body> /*bodies*/,
@@ -9,11 +11,15 @@ void ConstantProvider::computeCoefficients(std::span<const Body> /*bodies*/,
   // Isotropic: Eq. 7 with k_A = k_B = 0.
   const DirectionalMu mu =
       DirectionalMu::uniform(settings.directions, static_cast<float>(settings.mu0));
-  for (Contact& c : contacts) {
-    c.mu = mu;
-    c.covered_pixels = 0;
-    c.fallback = false;
-  }
+  const auto fill = [&](size_t i) {
+    contacts[i].mu = mu;
+    contacts[i].covered_pixels = 0;
+    contacts[i].fallback = false;
+  };
+  if (pool_)
+    pool_->forEach(contacts.size(), 512, fill);
+  else
+    for (size_t i = 0; i < contacts.size(); ++i) fill(i);
 }
 
 }  // namespace asperity
