@@ -15,8 +15,19 @@ namespace asperity {
 
 namespace {
 
-// Fewest rows (contacts and joint rows) that the islands are swept in parallel for.
+// Fewest rows (contacts and joint rows) that the islands are swept in parallel for, and fewest
+// items (bodies, contacts) that per-item work goes to the threads for: below that, waking them
+// costs more than the work.
 constexpr size_t kParallelRows = 256;
+
+// body(i) for i in [0, n), on the pool when there is one and enough items.
+template <class Body>
+void forEachItem(const ThreadPool* pool, size_t n, size_t grain, const Body& body) {
+  if (pool && n >= kParallelRows)
+    pool->forEach(n, grain, body);
+  else
+    for (size_t i = 0; i < n; ++i) body(i);
+}
 
 // Tag for the frictionless pass (frame mode Auto): normal rows only.
 struct NoFriction {};
@@ -43,7 +54,7 @@ void ContactSolver::begin(std::span<const Body> bodies, const SolverSettings& se
   position_.resize(n);
   rotation_.resize(n);
   // Static and kinematic bodies keep their velocity and never take an impulse.
-  for (size_t i = 0; i < n; ++i) {
+  forEachItem(pool_, n, 64, [&](size_t i) {
     const Body& body = bodies[i];
     v_[i] = body.linear_velocity;
     w_[i] = body.angular_velocity;
@@ -52,7 +63,7 @@ void ContactSolver::begin(std::span<const Body> bodies, const SolverSettings& se
     inv_inertia_[i] = dynamic ? body.inverseInertiaWorld() : Mat3::Zero();
     position_[i] = body.pose.position;
     rotation_[i] = body.pose.rotation;
-  }
+  });
   rows_.clear();
   order_.clear();
   limits_ = emptyLimits(settings.limit_surface,
@@ -121,8 +132,7 @@ void ContactSolver::prepareContact(const Contact& c, ContactRow& row) const {
   row.lambda_n = row.lambda_t = row.lambda_b = row.lambda_p = 0.0;
 }
 
-void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction,
-                                const ThreadPool* pool) {
+void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction) {
   friction_ = friction;
   const size_t n = contacts.size();
   rows_.resize(n);
@@ -143,10 +153,7 @@ void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction
         },
         limits_);
   };
-  if (pool && n >= kParallelRows)
-    pool->forEach(n, 64, make);
-  else
-    for (size_t i = 0; i < n; ++i) make(i);
+  forEachItem(pool_, n, 64, make);
   if (settings_.warm_starting) {
     // In contact order: the walking cursor of findCached decides which of equal keys match.
     size_t cursor = 0;
@@ -155,7 +162,7 @@ void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction
         warmStartRow(*cached, rows_[i], i);
   }
   scheduleRows();
-  storeInSweepOrder(pool);
+  storeInSweepOrder();
 }
 
 void ContactSolver::scheduleRows() {
@@ -189,20 +196,14 @@ void ContactSolver::scheduleRows() {
   while (head < pending_.size()) emit(pending_[head++]);
 }
 
-void ContactSolver::storeInSweepOrder(const ThreadPool* pool) {
+void ContactSolver::storeInSweepOrder() {
   // Rows and limits stored in sweep order: each sweep streams through memory front to back,
   // so the prefetcher hides the misses once the rows outgrow the cache. slot_ maps a contact
   // to its row. Each slot is written once, so the copies may run on the pool.
   const size_t n = rows_.size();
   slot_.resize(n);
   sorted_.resize(n);
-  const auto copy = [&](auto&& each) {
-    if (pool && n >= kParallelRows)
-      pool->forEach(n, 256, each);
-    else
-      for (size_t k = 0; k < n; ++k) each(k);
-  };
-  copy([&](size_t k) {
+  forEachItem(pool_, n, 256, [&](size_t k) {
     const size_t i = static_cast<size_t>(order_[k]);
     slot_[i] = static_cast<int>(k);
     sorted_[k] = rows_[i];
@@ -211,7 +212,7 @@ void ContactSolver::storeInSweepOrder(const ThreadPool* pool) {
   auto permute = [&](auto& limits) {
     if (limits.size() != n) return;
     std::remove_reference_t<decltype(limits)> sorted(n);
-    copy([&](size_t k) { sorted[k] = std::move(limits[static_cast<size_t>(order_[k])]); });
+    forEachItem(pool_, n, 256, [&](size_t k) { sorted[k] = std::move(limits[static_cast<size_t>(order_[k])]); });
     limits.swap(sorted);
   };
   std::visit(permute, limits_);
@@ -422,7 +423,7 @@ double ContactSolver::sweepIsland(const Island& island, int iterations) {
   return delta2;
 }
 
-void ContactSolver::iterate(int iterations, const ThreadPool* pool) {
+void ContactSolver::iterate(int iterations) {
   if (!warm_started_) {
     if (settings_.warm_starting) warmStart();
     warm_started_ = true;
@@ -432,8 +433,8 @@ void ContactSolver::iterate(int iterations, const ThreadPool* pool) {
   auto sweep = [&](size_t k) { island_delta_[k] = sweepIsland(islands_[k], iterations); };
   // Threads pay off only when there is enough to sweep: waking them costs tens of us.
   const size_t rows = rows_.size() + balls_.size() + axes_.size();
-  if (pool && island_count_ > 1 && rows >= kParallelRows) {
-    pool->forEach(island_count_, 1, sweep);
+  if (pool_ && island_count_ > 1 && rows >= kParallelRows) {
+    pool_->forEach(island_count_, 1, sweep);
   } else {
     for (size_t k = 0; k < island_count_; ++k) sweep(k);
   }
@@ -445,20 +446,20 @@ void ContactSolver::iterate(int iterations, const ThreadPool* pool) {
 
 void ContactSolver::finish(std::span<Body> bodies, std::span<Contact> contacts) {
   // Velocities of dynamic bodies; the impulses on each contact.
-  for (size_t i = 0; i < bodies.size(); ++i) {
-    if (!bodies[i].isDynamic()) continue;
+  forEachItem(pool_, bodies.size(), 64, [&](size_t i) {
+    if (!bodies[i].isDynamic()) return;
     bodies[i].linear_velocity = v_[i];
     bodies[i].angular_velocity = w_[i];
-  }
-  cache_.clear();
-  for (size_t i = 0; i < rows_.size() && i < contacts.size(); ++i) {
+  });
+  cache_.resize(std::min(rows_.size(), contacts.size()));
+  forEachItem(pool_, cache_.size(), 256, [&](size_t i) {
     const ContactRow& r = rows_[static_cast<size_t>(slot_[i])];
     contacts[i].lambda_n = r.lambda_n;
     contacts[i].lambda_t = r.lambda_t;
     contacts[i].lambda_b = r.lambda_b;
-    cache_.push_back({contacts[i].body_a, contacts[i].body_b, contacts[i].key, r.lambda_n,
-                      r.lambda_t * r.t + r.lambda_b * r.n.cross(r.t)});
-  }
+    cache_[i] = {contacts[i].body_a, contacts[i].body_b, contacts[i].key, r.lambda_n,
+                 r.lambda_t * r.t + r.lambda_b * r.n.cross(r.t)};
+  });
   // Sorted by (body_a, body_b, key) for the next step's lookups; contacts usually arrive in
   // that order already (stable: ties keep contact order).
   if (!std::is_sorted(cache_.begin(), cache_.end())) std::stable_sort(cache_.begin(), cache_.end());

@@ -56,21 +56,23 @@ struct SolverJoint {
 
 class ContactSolver {
  public:
+  // The threads of the calls below (null: the calling thread only). Per-body and per-contact
+  // work writes only its own slots and islands share no moving body, so the results are the
+  // same bits on any thread count.
+  void setThreadPool(const ThreadPool* pool) { pool_ = pool; }
   // Copies body velocities (after external forces) and inverse masses; clears the rows.
   void begin(std::span<const Body> bodies, const SolverSettings& settings);
   // Joint rows (anchors in world from the bodies' poses).
   void setJoints(std::span<const SolverJoint> joints);
   // Contact rows. With friction, contacts carry their frame (t, b) and mu; without, only the
   // normal rows are solved (frame mode Auto's first pass). Each contact's row and limit surface
-  // are made on `pool`'s threads when given (each writes only its own slot: the same rows on
-  // any thread count); warm starting and the sweep order follow on the calling thread.
-  void setContacts(std::span<const Contact> contacts, bool friction,
-                   const ThreadPool* pool = nullptr);
+  // are made on the pool; warm starting and the sweep order follow on the calling thread.
+  void setContacts(std::span<const Contact> contacts, bool friction);
   // Warm start (first call after setContacts only) and `iterations` PGS sweeps. The rows fall
-  // into islands that share no moving body; each island is swept on its own (on `pool`'s
-  // threads when given), its rows in the global sweep order, which gives exactly the bits of
-  // one sweep over all rows: rows of other islands never read its bodies.
-  void iterate(int iterations, const ThreadPool* pool = nullptr);
+  // into islands that share no moving body; each island is swept on its own (on the pool's
+  // threads), its rows in the global sweep order, which gives exactly the bits of one sweep
+  // over all rows: rows of other islands never read its bodies.
+  void iterate(int iterations);
   // Writes velocities and impulses back and remembers them for the next step's warm start.
   void finish(std::span<Body> bodies, std::span<Contact> contacts);
 
@@ -139,7 +141,7 @@ class ContactSolver {
   const Cached* findCached(const Contact& c, size_t& cursor) const;
   void warmStartRow(const Cached& cached, ContactRow& row, size_t index) const;
   void scheduleRows();
-  void storeInSweepOrder(const ThreadPool* pool);
+  void storeInSweepOrder();
   void warmStart();
   void warmStartJoints();
   void addAngularRow(int a, int b, int joint, int slot, const Vec3& u, double target);
@@ -159,6 +161,7 @@ class ContactSolver {
   void applyImpulse(int a, int b, const Vec3& p, const Vec3& ia, const Vec3& ib);
 
   SolverSettings settings_;
+  const ThreadPool* pool_ = nullptr;
   // Per body (indexed by BodyId): velocities, pseudo-velocities, inverse masses.
   std::vector<Vec3> v_, w_, vp_, wp_;
   std::vector<double> inv_mass_;

@@ -57,6 +57,7 @@ void World::step() {
   if (!(settings_.dt > 0.0)) throw Error("world settings: dt must be > 0");
   if (settings_.iterations < 1) throw Error("world settings: iterations must be >= 1");
   provider_->setThreadPool(&threadPool());
+  solver_->setThreadPool(pool_.get());
   StepProfile p;
   const Clock::time_point begin = Clock::now();
   Clock::time_point clock = begin;

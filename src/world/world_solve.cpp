@@ -97,8 +97,8 @@ std::span<const SolverJoint> World::solverJoints(double t, double dt) {
 void World::solveOnce(double t, double h) {
   solver_->begin(bodies_, solverSettings());
   solver_->setJoints(solverJoints(t, h));
-  solver_->setContacts(contacts_, true, pool_.get());
-  solver_->iterate(settings_.iterations, pool_.get());
+  solver_->setContacts(contacts_, true);
+  solver_->iterate(settings_.iterations);
   solver_->finish(bodies_, contacts_);
 }
 
