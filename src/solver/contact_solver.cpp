@@ -155,11 +155,21 @@ void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction
   };
   forEachItem(pool_, n, 64, make);
   if (settings_.warm_starting) {
-    // In contact order: the walking cursor of findCached decides which of equal keys match.
-    size_t cursor = 0;
-    for (size_t i = 0; i < n; ++i)
-      if (const Cached* cached = findCached(contacts[i], cursor))
-        warmStartRow(*cached, rows_[i], i);
+    // Runs of contacts on the pool, each with its own walking cursor: findCached's matches do
+    // not depend on where the cursor was.
+    const auto run = [&](size_t first, size_t last) {
+      size_t cursor = 0;
+      for (size_t i = first; i < last; ++i)
+        if (const Cached* cached = findCached(contacts[i], cursor))
+          warmStartRow(*cached, rows_[i], i);
+    };
+    if (pool_ && n >= kParallelRows) {
+      pool_->forEach((n + kParallelRows - 1) / kParallelRows, 1, [&](size_t k) {
+        run(k * kParallelRows, std::min(n, (k + 1) * kParallelRows));
+      });
+    } else {
+      run(0, n);
+    }
   }
   scheduleRows();
   storeInSweepOrder();
@@ -224,7 +234,8 @@ bool ContactSolver::Cached::operator<(const Cached& o) const {
 
 const ContactSolver::Cached* ContactSolver::findCached(const Contact& c, size_t& cursor) const {
   // Contacts and cache share the order (body_a, body_b, key): a walking cursor finds most
-  // entries in O(1); anything else falls back to a binary search. Only a unique match counts.
+  // entries in O(1); anything else falls back to a binary search. Only a key the cache holds
+  // once counts, whatever the cursor was, so any split of the contacts finds the same entries.
   const Cached probe{c.body_a, c.body_b, c.key, 0.0, Vec3::Zero()};
   auto same = [&](size_t i) {
     return i < cache_.size() && !(cache_[i] < probe) && !(probe < cache_[i]);
@@ -235,7 +246,7 @@ const ContactSolver::Cached* ContactSolver::findCached(const Contact& c, size_t&
     if (!same(cursor)) return nullptr;
   }
   const size_t hit = cursor++;
-  if (same(cursor)) return nullptr;  // the key is not unique
+  if (same(cursor) || (hit > 0 && same(hit - 1))) return nullptr;  // the key is not unique
   return &cache_[hit];
 }
 

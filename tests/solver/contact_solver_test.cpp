@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "parallel/thread_pool.hpp"
 #include "support/test_support.hpp"
 
 namespace asperity {
@@ -239,6 +240,36 @@ TEST(ContactSolver, WarmStartReusesLastImpulsesByKey) {
   solver.setContacts(col.contacts, true);
   solver.iterate(1);
   EXPECT_LT(solver.lastDelta(), 1e-6 * cold);
+}
+
+// Warm starting matches a contact to last step's impulse only when its key was unique, and
+// finds the same matches when its contacts are split over threads (from 256 contacts on).
+TEST(ContactSolver, WarmStartSkipsRepeatedKeysOnAnyThreadCount) {
+  for (const int threads : {1, 2}) {
+    const ThreadPool pool(threads);
+    Column col = column(70);  // 280 contacts
+    col.contacts[101].key = col.contacts[100].key;  // two corners of one pair share a key
+    SolverSettings s = settings(LimitSurfaceKind::Box);
+    s.warm_starting = true;
+    ContactSolver solver;
+    solver.setThreadPool(&pool);
+    std::vector<Contact> solved = col.contacts;
+    solver.begin(col.bodies, s);
+    solver.setContacts(solved, true);
+    solver.iterate(200);
+    solver.finish(col.bodies, solved);
+    // The same contacts again: no sweep, only the warm start.
+    std::vector<Contact> again = col.contacts;
+    solver.begin(column(70).bodies, s);
+    solver.setContacts(again, true);
+    solver.iterate(0);
+    solver.finish(col.bodies, again);
+    for (size_t i = 0; i < again.size(); ++i) {
+      const bool repeated = i == 100 || i == 101;
+      EXPECT_EQ(again[i].lambda_n, repeated ? 0.0 : solved[i].lambda_n)
+          << "contact " << i << ", " << threads << " threads";
+    }
+  }
 }
 
 TEST(ContactSolver, SplitImpulseCorrectsPenetrationWithoutVelocity) {
