@@ -357,11 +357,7 @@ struct CollisionDetector::Impl {
       begin = end;
     }
     out.resize(contacts.size());
-    const auto copy = [&](size_t i) { out[i] = contacts[order[i].index]; };
-    if (workers)
-      workers->forEach(order.size(), 256, copy);
-    else
-      for (size_t i = 0; i < order.size(); ++i) copy(i);
+    forEachOn(workers, order.size(), 256, [&](size_t i) { out[i] = contacts[order[i].index]; });
   }
 
   void collect(std::span<const Body> bodies, const ThreadPool* pool);
@@ -453,16 +449,10 @@ void CollisionDetector::Impl::collectManifolds() {
   }
   // Each manifold's points and new points (without a persistent id yet), counted per manifold
   // on the pool, then summed in manifold order: a manifold's first slot and its first new id.
-  const auto each = [&](size_t n, size_t grain, const auto& body) {
-    if (workers)
-      workers->forEach(n, grain, body);
-    else
-      for (size_t m = 0; m < n; ++m) body(m);
-  };
   const size_t manifolds = static_cast<size_t>(count);
   manifold_first.resize(manifolds + 1);
   manifold_new.resize(manifolds + 1);
-  each(manifolds, 64, [&](size_t m) {
+  forEachOn(workers, manifolds, 64, [&](size_t m) {
     const btPersistentManifold* mf = manifold(m);
     size_t fresh = 0;
     for (int p = 0; p < mf->getNumContacts(); ++p)
@@ -497,7 +487,7 @@ void CollisionDetector::Impl::collectManifolds() {
           c, static_cast<uint64_t>(reinterpret_cast<uintptr_t>(pt.m_userPersistentData)));
     }
   };
-  each(manifolds, 32, convert);
+  forEachOn(workers, manifolds, 32, convert);
   // Gaps out unless reported, in order.
   if (!settings.report_gaps)
     contacts.erase(std::remove_if(contacts.begin() + static_cast<std::ptrdiff_t>(base),

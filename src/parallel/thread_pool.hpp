@@ -49,4 +49,14 @@ class ThreadPool {
   std::unique_ptr<tbb::task_arena> arena_;  // null: one thread
 };
 
+// pool->forEach, or a plain loop when there is no pool (a caller without threads).
+template <class Body>
+void forEachOn(const ThreadPool* pool, size_t count, size_t grain, const Body& body) {
+  if (pool) {
+    pool->forEach(count, grain, body);
+  } else {
+    for (size_t i = 0; i < count; ++i) body(i);
+  }
+}
+
 }  // namespace asperity

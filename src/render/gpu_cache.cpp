@@ -50,7 +50,6 @@ void uploadMesh(const ShapeMesh& mesh, GpuMesh& gpu) {
   gpu.index_count = static_cast<GLsizei>(indices.size());
 }
 
-// Mipmaps, repeat, trilinear and (where available) anisotropic filtering for the bound texture.
 // Anisotropic filtering keeps grazing views of rough ground sharp, except on Mesa's llvmpipe:
 // there (Mesa 22.3) a normal-mapped face seen almost exactly edge-on with MSAA took minutes to
 // draw (renderer_test.cpp, EdgeOnNormalMappedFaceDrawsPromptly).
@@ -62,6 +61,7 @@ bool anisotropicFiltering() {
          std::strstr(reinterpret_cast<const char*>(renderer), "llvmpipe") == nullptr;
 }
 
+// Mipmaps, repeat, trilinear and (where available) anisotropic filtering for the bound texture.
 void setSampling() {
   glGenerateMipmap(GL_TEXTURE_2D);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);

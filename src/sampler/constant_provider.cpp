@@ -11,15 +11,11 @@ void ConstantProvider::computeCoefficients(std::span<const Body> /*bodies*/,
   // Isotropic: Eq. 7 with k_A = k_B = 0.
   const DirectionalMu mu =
       DirectionalMu::uniform(settings.directions, static_cast<float>(settings.mu0));
-  const auto fill = [&](size_t i) {
+  forEachOn(pool_, contacts.size(), 512, [&](size_t i) {
     contacts[i].mu = mu;
     contacts[i].covered_pixels = 0;
     contacts[i].fallback = false;
-  };
-  if (pool_)
-    pool_->forEach(contacts.size(), 512, fill);
-  else
-    for (size_t i = 0; i < contacts.size(); ++i) fill(i);
+  });
 }
 
 }  // namespace asperity

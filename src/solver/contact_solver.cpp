@@ -23,10 +23,7 @@ constexpr size_t kParallelRows = 256;
 // body(i) for i in [0, n), on the pool when there is one and enough items.
 template <class Body>
 void forEachItem(const ThreadPool* pool, size_t n, size_t grain, const Body& body) {
-  if (pool && n >= kParallelRows)
-    pool->forEach(n, grain, body);
-  else
-    for (size_t i = 0; i < n; ++i) body(i);
+  forEachOn(n >= kParallelRows ? pool : nullptr, n, grain, body);
 }
 
 // Tag for the frictionless pass (frame mode Auto): normal rows only.
@@ -163,13 +160,9 @@ void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction
         if (const Cached* cached = findCached(contacts[i], cursor))
           warmStartRow(*cached, rows_[i], i);
     };
-    if (pool_ && n >= kParallelRows) {
-      pool_->forEach((n + kParallelRows - 1) / kParallelRows, 1, [&](size_t k) {
-        run(k * kParallelRows, std::min(n, (k + 1) * kParallelRows));
-      });
-    } else {
-      run(0, n);
-    }
+    forEachOn(pool_, (n + kParallelRows - 1) / kParallelRows, 1, [&](size_t k) {
+      run(k * kParallelRows, std::min(n, (k + 1) * kParallelRows));
+    });
   }
   scheduleRows();
   storeInSweepOrder();
