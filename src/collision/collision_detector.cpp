@@ -174,8 +174,10 @@ struct CollisionDetector::Impl {
   };
   std::vector<SortKey> order;
   std::vector<size_t> bucket_start;    // per body_a, for sortInto
-  // Per manifold (collectManifolds), then summed: its first point's slot, its first new id.
+  // Per manifold (collectManifolds), then summed: its first point's slot, its first new id;
+  // and whether it reported a gap.
   std::vector<size_t> manifold_first, manifold_new;
+  std::vector<uint8_t> manifold_gap;
   // This call's worker threads (null: the calling thread only), and the box-box pairs whose
   // narrowphase waits for them (deferBoxPair).
   const ThreadPool* workers = nullptr;
@@ -472,6 +474,7 @@ void CollisionDetector::Impl::collectManifolds() {
   const uint64_t first_id = next_point_id;
   next_point_id += manifold_new[manifolds];
   contacts.resize(base + manifold_first[manifolds]);
+  manifold_gap.assign(manifolds, 0);
   const auto convert = [&](size_t m) {
     btPersistentManifold* mf = manifold(m);
     const ShapeRecord& r0 = record(mf->getBody0());
@@ -485,11 +488,13 @@ void CollisionDetector::Impl::collectManifolds() {
       c = manifoldContact(pt, r0, r1);
       c.key = contactKey(
           c, static_cast<uint64_t>(reinterpret_cast<uintptr_t>(pt.m_userPersistentData)));
+      manifold_gap[m] |= static_cast<uint8_t>(c.phi < 0);
     }
   };
   forEachOn(workers, manifolds, 32, convert);
-  // Gaps out unless reported, in order.
-  if (!settings.report_gaps)
+  // Gaps out unless reported, in order (a pass over every contact only when there are some).
+  const bool gaps = std::find(manifold_gap.begin(), manifold_gap.end(), 1) != manifold_gap.end();
+  if (gaps && !settings.report_gaps)
     contacts.erase(std::remove_if(contacts.begin() + static_cast<std::ptrdiff_t>(base),
                                   contacts.end(), [](const Contact& c) { return c.phi < 0; }),
                    contacts.end());

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -273,14 +274,21 @@ void ContactSolver::applyImpulse(int a, int b, const Vec3& p, const Vec3& ia, co
 
 void ContactSolver::warmStart() {
   warmStartJoints();
-  // Contact order (not sweep order): the same sums as before the rows were reordered.
-  for (const int k : slot_) {
-    const ContactRow& r = rows_[static_cast<size_t>(k)];
-    const Vec3 p = r.lambda_n * r.n + r.lambda_t * r.t + r.lambda_b * r.n.cross(r.t);
-    const Vec3 ia = r.lambda_n * r.ia_n + r.lambda_t * r.ia_t + r.lambda_b * r.ia_b;
-    const Vec3 ib = r.lambda_n * r.ib_n + r.lambda_t * r.ib_t + r.lambda_b * r.ib_b;
-    applyImpulse(r.a, r.b, p, ia, ib);
-  }
+  // Contact order (not sweep order): the same sums as before the rows were reordered. Island
+  // by island, which share no moving body: each body still takes its impulses in contact
+  // order, so the islands may run on the pool.
+  for (size_t k = 0; k < island_count_; ++k) islands_[k].warm.clear();
+  for (const int row : slot_)
+    islands_[static_cast<size_t>(row_island_[static_cast<size_t>(row)])].warm.push_back(row);
+  forEachIsland([&](size_t k) {
+    for (const int row : islands_[k].warm) {
+      const ContactRow& r = rows_[static_cast<size_t>(row)];
+      const Vec3 p = r.lambda_n * r.n + r.lambda_t * r.t + r.lambda_b * r.n.cross(r.t);
+      const Vec3 ia = r.lambda_n * r.ia_n + r.lambda_t * r.ia_t + r.lambda_b * r.ia_b;
+      const Vec3 ib = r.lambda_n * r.ib_n + r.lambda_t * r.ib_t + r.lambda_b * r.ib_b;
+      applyImpulse(r.a, r.b, p, ia, ib);
+    }
+  });
 }
 
 template <class Limit>
@@ -407,8 +415,18 @@ void ContactSolver::buildIslands() {
     islandOf(balls_[i].a, balls_[i].b).balls.push_back(static_cast<int>(i));
   for (size_t i = 0; i < axes_.size(); ++i)
     islandOf(axes_[i].a, axes_[i].b).axes.push_back(static_cast<int>(i));
-  for (size_t i = 0; i < rows_.size(); ++i)
-    islandOf(rows_[i].a, rows_[i].b).contacts.push_back(static_cast<int>(i));
+  row_island_.resize(rows_.size());
+  for (size_t i = 0; i < rows_.size(); ++i) {
+    Island& island = islandOf(rows_[i].a, rows_[i].b);
+    island.contacts.push_back(static_cast<int>(i));
+    row_island_[i] = static_cast<int>(&island - islands_.data());
+  }
+}
+
+void ContactSolver::forEachIsland(const std::function<void(size_t)>& body) const {
+  // Threads pay off only when there is enough to sweep: waking them costs tens of us.
+  const size_t rows = rows_.size() + balls_.size() + axes_.size();
+  forEachOn(island_count_ > 1 && rows >= kParallelRows ? pool_ : nullptr, island_count_, 1, body);
 }
 
 double ContactSolver::sweepIsland(const Island& island, int iterations) {
@@ -428,20 +446,13 @@ double ContactSolver::sweepIsland(const Island& island, int iterations) {
 }
 
 void ContactSolver::iterate(int iterations) {
+  buildIslands();
   if (!warm_started_) {
     if (settings_.warm_starting) warmStart();
     warm_started_ = true;
   }
-  buildIslands();
   island_delta_.assign(island_count_, 0.0);
-  auto sweep = [&](size_t k) { island_delta_[k] = sweepIsland(islands_[k], iterations); };
-  // Threads pay off only when there is enough to sweep: waking them costs tens of us.
-  const size_t rows = rows_.size() + balls_.size() + axes_.size();
-  if (pool_ && island_count_ > 1 && rows >= kParallelRows) {
-    pool_->forEach(island_count_, 1, sweep);
-  } else {
-    for (size_t k = 0; k < island_count_; ++k) sweep(k);
-  }
+  forEachIsland([&](size_t k) { island_delta_[k] = sweepIsland(islands_[k], iterations); });
   // The last sweep's impulse changes, summed in island order.
   double delta2 = 0.0;
   for (size_t k = 0; k < island_count_; ++k) delta2 += island_delta_[k];

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <tuple>
 #include <variant>
@@ -150,8 +151,11 @@ class ContactSolver {
   // Rows (indices into balls_, axes_, rows_, ascending) that touch one group of moving bodies.
   struct Island {
     std::vector<int> balls, axes, contacts;
+    std::vector<int> warm;  // its contact rows in contact order (warmStart)
   };
   void buildIslands();
+  // body(k) for every island k, on the pool when there is enough work.
+  void forEachIsland(const std::function<void(size_t)>& body) const;
   int findRoot(int body);
   double sweepIsland(const Island& island, int iterations);
   template <class Limit>
@@ -185,6 +189,7 @@ class ContactSolver {
   size_t island_count_ = 0;
   std::vector<int> root_;       // union-find over bodies
   std::vector<int> island_of_;  // island of a root body, -1 before it has one
+  std::vector<int> row_island_;  // island of each contact row
   std::vector<double> island_delta_;
   // Warm-start cache of the previous step, sorted by key.
   std::vector<Cached> cache_;
