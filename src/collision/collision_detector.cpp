@@ -163,6 +163,7 @@ struct CollisionDetector::Impl {
   PairFilter filter;
 
   std::vector<std::pair<int, int>> plane_pairs;  // record pairs found by the broadphase
+  std::vector<std::vector<Contact>> plane_contacts;  // per plane pair (collectPlanes)
   std::vector<std::pair<int, int>> sdf_pairs;
   std::vector<Contact> contacts;               // this call's contacts in the order found
   std::vector<CylinderSidePoint> side_points;  // scratch of collectCylinderSide
@@ -370,7 +371,9 @@ struct CollisionDetector::Impl {
   void collectManifolds();
   Contact manifoldContact(const btManifoldPoint& pt, const ShapeRecord& r0,
                           const ShapeRecord& r1) const;
-  void collectPlane(int r0, int r1);
+  // Plane pairs on the pool, each into its own buffer, appended in pair order.
+  void collectPlanes();
+  void collectPlane(int r0, int r1, std::vector<Contact>& out) const;
   bool collectCylinderSide(int r0, int r1);
   void collectSwept();
   Contact sweptContact(const ShapeRecord& moving, const Vec3& displacement, const SweepHit& hit);
@@ -538,7 +541,22 @@ Contact CollisionDetector::Impl::manifoldContact(const btManifoldPoint& pt, cons
   return c;
 }
 
-void CollisionDetector::Impl::collectPlane(int r0, int r1) {
+void CollisionDetector::Impl::collectPlanes() {
+  // Mesh features are made on first use, on this thread.
+  for (const auto& [r0, r1] : plane_pairs) {
+    featuresOf(records[static_cast<size_t>(r0)]);
+    featuresOf(records[static_cast<size_t>(r1)]);
+  }
+  if (plane_contacts.size() < plane_pairs.size()) plane_contacts.resize(plane_pairs.size());
+  forEachOn(workers, plane_pairs.size(), 8, [&](size_t k) {
+    plane_contacts[k].clear();
+    collectPlane(plane_pairs[k].first, plane_pairs[k].second, plane_contacts[k]);
+  });
+  for (size_t k = 0; k < plane_pairs.size(); ++k)
+    contacts.insert(contacts.end(), plane_contacts[k].begin(), plane_contacts[k].end());
+}
+
+void CollisionDetector::Impl::collectPlane(int r0, int r1, std::vector<Contact>& out) const {
   // The plane is always B (its body is static or kinematic, the other one dynamic).
   const bool plane_first = records[static_cast<size_t>(r0)].shape.type == ShapeType::Plane;
   const ShapeRecord& ra = records[static_cast<size_t>(plane_first ? r1 : r0)];
@@ -562,11 +580,11 @@ void CollisionDetector::Impl::collectPlane(int r0, int r1) {
     c.phi = -p.distance;
     c.point = 0.5 * (c.witness_a + c.witness_b);
     if (ra.shape.type == ShapeType::Box) c.feature_a = boxFace(ra.world, -c.normal);
-    if (const MeshFeatures* f = featuresOf(ra)) {
+    if (const MeshFeatures* f = madeFeaturesOf(ra)) {
       c.feature_a = f->triangleAtVertex(p.id, ra.world.rotation.conjugate() * -c.normal);
     }
     c.key = contactKey(c, static_cast<uint64_t>(p.id) | kPlanePointTag);
-    contacts.push_back(c);
+    out.push_back(c);
   }
 }
 
@@ -743,7 +761,7 @@ void CollisionDetector::Impl::collect(std::span<const Body> bodies, const Thread
   if (world) world->performDiscreteCollisionDetection();
   if (!deferred.empty()) processDeferred();
   if (dispatcher) collectManifolds();
-  for (const auto& [r0, r1] : plane_pairs) collectPlane(r0, r1);
+  collectPlanes();
   for (const auto& [r0, r1] : sdf_pairs) {
     sdfPairContacts(records[static_cast<size_t>(r0)], records[static_cast<size_t>(r1)], settings,
                     sdf, contacts);
