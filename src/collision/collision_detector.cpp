@@ -162,7 +162,7 @@ struct CollisionDetector::Impl {
   std::unique_ptr<btCollisionWorld> world;
   PairFilter filter;
 
-  std::vector<std::pair<int, int>> plane_pairs;  // record pairs found by the broadphase
+  std::vector<std::pair<int, int>> plane_pairs;      // record pairs found by the broadphase
   std::vector<std::vector<Contact>> plane_contacts;  // per plane pair (collectPlanes)
   std::vector<std::pair<int, int>> sdf_pairs;
   std::vector<Contact> contacts;               // this call's contacts in the order found
@@ -174,7 +174,7 @@ struct CollisionDetector::Impl {
     uint32_t index;
   };
   std::vector<SortKey> order;
-  std::vector<size_t> bucket_start;    // per body_a, for sortInto
+  std::vector<size_t> bucket_start;  // per body_a, for sortInto
   // Per manifold (collectManifolds), then summed: its first point's slot, its first new id;
   // and whether it reported a gap.
   std::vector<size_t> manifold_first, manifold_new;
@@ -302,8 +302,8 @@ struct CollisionDetector::Impl {
     return settings.contact_margin > 0 ? settings.contact_margin : 0.02 * shapeSize(r.shape);
   }
 
-  // Triangle lookup for dynamic meshes and hulls with triangles (built on first use).
-  // Dynamic triangle meshes and hulls made from meshes map contacts to mesh triangles.
+  // Dynamic triangle meshes and hulls made from meshes map contacts to mesh triangles (a
+  // triangle lookup, built on first use).
   static bool hasFeatures(const ShapeRecord& r) {
     const bool dynamic_mesh =
         r.shape.type == ShapeType::TriangleMesh && r.body_type == BodyType::Dynamic;

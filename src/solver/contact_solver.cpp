@@ -161,9 +161,8 @@ void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction
         if (const Cached* cached = findCached(contacts[i], cursor))
           warmStartRow(*cached, rows_[i], i);
     };
-    forEachOn(pool_, (n + kParallelRows - 1) / kParallelRows, 1, [&](size_t k) {
-      run(k * kParallelRows, std::min(n, (k + 1) * kParallelRows));
-    });
+    forEachOn(pool_, (n + kParallelRows - 1) / kParallelRows, 1,
+              [&](size_t k) { run(k * kParallelRows, std::min(n, (k + 1) * kParallelRows)); });
   }
   scheduleRows();
   storeInSweepOrder();
@@ -216,7 +215,8 @@ void ContactSolver::storeInSweepOrder() {
   auto permute = [&](auto& limits) {
     if (limits.size() != n) return;
     std::remove_reference_t<decltype(limits)> sorted(n);
-    forEachItem(pool_, n, 256, [&](size_t k) { sorted[k] = std::move(limits[static_cast<size_t>(order_[k])]); });
+    forEachItem(pool_, n, 256,
+                [&](size_t k) { sorted[k] = std::move(limits[static_cast<size_t>(order_[k])]); });
     limits.swap(sorted);
   };
   std::visit(permute, limits_);

@@ -66,8 +66,9 @@ class ContactSolver {
   // Joint rows (anchors in world from the bodies' poses).
   void setJoints(std::span<const SolverJoint> joints);
   // Contact rows. With friction, contacts carry their frame (t, b) and mu; without, only the
-  // normal rows are solved (frame mode Auto's first pass). Each contact's row and limit surface
-  // are made on the pool; warm starting and the sweep order follow on the calling thread.
+  // normal rows are solved (frame mode Auto's first pass). Rows, limit surfaces, warm starting
+  // (in runs of contacts) and the copy into sweep order run on the pool; the sweep order itself
+  // is chosen on the calling thread.
   void setContacts(std::span<const Contact> contacts, bool friction);
   // Warm start (first call after setContacts only) and `iterations` PGS sweeps. The rows fall
   // into islands that share no moving body; each island is swept on its own (on the pool's
@@ -187,8 +188,8 @@ class ContactSolver {
   // Islands of this solve, reused across steps (only the first island_count_ are live).
   std::vector<Island> islands_;
   size_t island_count_ = 0;
-  std::vector<int> root_;       // union-find over bodies
-  std::vector<int> island_of_;  // island of a root body, -1 before it has one
+  std::vector<int> root_;        // union-find over bodies
+  std::vector<int> island_of_;   // island of a root body, -1 before it has one
   std::vector<int> row_island_;  // island of each contact row
   std::vector<double> island_delta_;
   // Warm-start cache of the previous step, sorted by key.

@@ -56,8 +56,9 @@ const ThreadPool& World::threadPool() {
 void World::step() {
   if (!(settings_.dt > 0.0)) throw Error("world settings: dt must be > 0");
   if (settings_.iterations < 1) throw Error("world settings: iterations must be >= 1");
-  provider_->setThreadPool(&threadPool());
-  solver_->setThreadPool(pool_.get());
+  const ThreadPool& pool = threadPool();
+  provider_->setThreadPool(&pool);
+  solver_->setThreadPool(&pool);
   StepProfile p;
   const Clock::time_point begin = Clock::now();
   Clock::time_point clock = begin;

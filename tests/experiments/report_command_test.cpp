@@ -45,8 +45,7 @@ TEST(ReportCommand, WritesAPageWithOutcomePlotsAndTableOne) {
 // Mesa's llvmpipe: renderer_test.cpp, EdgeOnNormalMappedFaceDrawsPromptly).
 TEST(ReportCommand, EveryExperimentReproducesWithItsFrames) {
   const std::string dir = test::tempDir("report_all");
-  const auto r =
-      test::runCli({"report", "--out", dir, "--scenes", test::sourcePath("scenes")});
+  const auto r = test::runCli({"report", "--out", dir, "--scenes", test::sourcePath("scenes")});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("8 of 8 experiments reproduced"), std::string::npos) << r.out;
   for (const char* frame :

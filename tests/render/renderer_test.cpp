@@ -204,11 +204,11 @@ TEST(Renderer, EdgeOnNormalMappedFaceDrawsPromptly) {
   box.surface.texture_rotation = 45.0 * kPi / 180.0;
   render::RenderItem cube;
   cube.mesh = std::make_shared<const ShapeMesh>(buildShapeMesh(box));
-  cube.normal_map = std::make_shared<const NormalMap>(
-      generateNormalMap(GeneratorSpec{"oak", {}, 160, 12}));
+  cube.normal_map =
+      std::make_shared<const NormalMap>(generateNormalMap(GeneratorSpec{"oak", {}, 160, 12}));
   cube.pose.position = Vec3(0.0093278391032693871, -0.048882016869500014, 0.89813298584315593);
-  cube.pose.rotation = Quat(0.99997998070238736, 0.0010419960130041723,
-                            -0.00053720170515549569, 0.0062180264626378653);
+  cube.pose.rotation = Quat(0.99997998070238736, 0.0010419960130041723, -0.00053720170515549569,
+                            0.0062180264626378653);
   scene.items.push_back(cube);
   scene.focus = Eigen::AlignedBox3d(Vec3(-0.1, -0.15, 0.8), Vec3(0.1, 0.05, 1.0));
   render::Camera camera;

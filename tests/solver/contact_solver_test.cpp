@@ -247,7 +247,7 @@ TEST(ContactSolver, WarmStartReusesLastImpulsesByKey) {
 TEST(ContactSolver, WarmStartSkipsRepeatedKeysOnAnyThreadCount) {
   for (const int threads : {1, 2}) {
     const ThreadPool pool(threads);
-    Column col = column(70);  // 280 contacts
+    Column col = column(70);                        // 280 contacts
     col.contacts[101].key = col.contacts[100].key;  // two corners of one pair share a key
     SolverSettings s = settings(LimitSurfaceKind::Box);
     s.warm_starting = true;
