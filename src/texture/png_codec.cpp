@@ -102,10 +102,13 @@ uint32_t crc32(const uint8_t* data, size_t size, uint32_t crc) {
 }
 
 std::vector<uint8_t> readFile(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a file");
   std::optional<std::vector<uint8_t>> bytes = readFileBytes(path);
-  if (!bytes) fail(path, "cannot open (missing or unreadable)");
+  if (!bytes) {
+    // Why, only once it failed (readFileBytes refuses directories too).
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a file");
+    fail(path, "cannot open (missing or unreadable)");
+  }
   return std::move(*bytes);
 }
 
