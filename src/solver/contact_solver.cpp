@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <string>
 #include <tuple>
 #include <type_traits>
 #include <utility>
 #include <variant>
 
+#include "asperity/error.hpp"
 #include "parallel/thread_pool.hpp"
 
 namespace asperity {
@@ -131,27 +133,53 @@ void ContactSolver::prepareContact(const Contact& c, ContactRow& row) const {
 }
 
 void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction) {
+  // Rows and limit surfaces in one pass over the contacts.
+  makeRows(contacts, friction, friction);
+  completeRows(contacts);
+}
+
+void ContactSolver::setContactRows(std::span<const Contact> contacts) {
+  makeRows(contacts, true, false);
+}
+
+void ContactSolver::setContactLimits(std::span<const Contact> contacts) {
+  if (contacts.size() != rows_.size()) {
+    throw Error("solver: setContactLimits got " + std::to_string(contacts.size()) +
+                " contacts, setContactRows had " + std::to_string(rows_.size()));
+  }
+  forEachItem(pool_, contacts.size(), 64, [&](size_t i) { makeLimit(contacts[i], i); });
+  completeRows(contacts);
+}
+
+void ContactSolver::makeLimit(const Contact& contact, size_t i) {
+  // The limit surface the settings choose (SPEC 4), from the contact's coefficients.
+  std::visit(
+      [&](auto& limits) {
+        using Limit = typename std::decay_t<decltype(limits)>::value_type;
+        limits[i] = Limit::fromContact(contact.mu, settings_.coulomb_mu);
+      },
+      limits_);
+}
+
+void ContactSolver::makeRows(std::span<const Contact> contacts, bool friction, bool limits) {
   friction_ = friction;
   const size_t n = contacts.size();
   rows_.resize(n);
   std::visit(
-      [&](auto& limits) {
-        limits.clear();
-        if (friction) limits.resize(n);
+      [&](auto& surfaces) {
+        surfaces.clear();
+        if (friction) surfaces.resize(n);
       },
       limits_);
-  // Each contact's row and the limit surface the settings choose (SPEC 4), from the contact.
-  const auto make = [&](size_t i) {
+  // Each contact's row and, when asked, its limit surface.
+  forEachItem(pool_, n, 64, [&](size_t i) {
     prepareContact(contacts[i], rows_[i]);
-    if (!friction) return;
-    std::visit(
-        [&](auto& limits) {
-          using Limit = typename std::decay_t<decltype(limits)>::value_type;
-          limits[i] = Limit::fromContact(contacts[i].mu, settings_.coulomb_mu);
-        },
-        limits_);
-  };
-  forEachItem(pool_, n, 64, make);
+    if (limits) makeLimit(contacts[i], i);
+  });
+}
+
+void ContactSolver::completeRows(std::span<const Contact> contacts) {
+  const size_t n = contacts.size();
   if (settings_.warm_starting) {
     // Runs of contacts on the pool, each with its own walking cursor: findCached's matches do
     // not depend on where the cursor was.

@@ -70,6 +70,12 @@ class ContactSolver {
   // (in runs of contacts) and the copy into sweep order run on the pool; the sweep order itself
   // is chosen on the calling thread.
   void setContacts(std::span<const Contact> contacts, bool friction);
+  // setContacts(contacts, true) in two calls, so that the rows can be set up while the
+  // coefficients are still being computed (on a GPU): setContactRows reads only the contacts'
+  // geometry and frames; setContactLimits, with the same contacts now carrying mu, adds the
+  // limit surfaces and warm starts. The same bits as setContacts.
+  void setContactRows(std::span<const Contact> contacts);
+  void setContactLimits(std::span<const Contact> contacts);
   // Warm start (first call after setContacts only) and `iterations` PGS sweeps. The rows fall
   // into islands that share no moving body; each island is swept on its own (on the pool's
   // threads), its rows in the global sweep order, which gives exactly the bits of one sweep
@@ -140,6 +146,11 @@ class ContactSolver {
   };
 
   void prepareContact(const Contact& c, ContactRow& row) const;
+  void makeLimit(const Contact& contact, size_t i);
+  // The parts of setContacts: rows (and, with `limits`, limit surfaces) per contact; then
+  // warm starting, the sweep order and the copy into it.
+  void makeRows(std::span<const Contact> contacts, bool friction, bool limits);
+  void completeRows(std::span<const Contact> contacts);
   const Cached* findCached(const Contact& c, size_t& cursor) const;
   void warmStartRow(const Cached& cached, ContactRow& row, size_t index) const;
   void scheduleRows();

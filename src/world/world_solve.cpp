@@ -55,8 +55,18 @@ FrameInputs World::frameInputs() {
 }
 
 void World::computeFriction() {
+  contact_rows_ready_ = false;
   if (contacts_.empty()) return;
-  provider_->computeCoefficients(bodies_, contacts_, settings_.friction);
+  provider_->startCoefficients(bodies_, contacts_, settings_.friction);
+  // While a provider on another device (the gl sampler's GPU) works, the solver sets up the
+  // contact rows, which need no coefficients (one solve per step only: sub-steps move the
+  // contacts between solves).
+  if (provider_->runsAsynchronously() && settings_.substeps == 1) {
+    beginSolve(time_, settings_.dt);
+    solver_->setContactRows(contacts_);
+    contact_rows_ready_ = true;
+  }
+  provider_->finishCoefficients();
 }
 
 SolverSettings World::solverSettings() const {
@@ -94,10 +104,19 @@ std::span<const SolverJoint> World::solverJoints(double t, double dt) {
   return solver_joints_;
 }
 
-void World::solveOnce(double t, double h) {
+void World::beginSolve(double t, double h) {
   solver_->begin(bodies_, solverSettings());
   solver_->setJoints(solverJoints(t, h));
-  solver_->setContacts(contacts_, true);
+}
+
+void World::solveOnce(double t, double h) {
+  if (contact_rows_ready_) {
+    contact_rows_ready_ = false;
+    solver_->setContactLimits(contacts_);
+  } else {
+    beginSolve(t, h);
+    solver_->setContacts(contacts_, true);
+  }
   solver_->iterate(settings_.iterations);
   solver_->finish(bodies_, contacts_);
 }

@@ -4,8 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <span>
+#include <string>
+#include <utility>
 #include <vector>
 
+#include "asperity/error.hpp"
 #include "parallel/thread_pool.hpp"
 #include "support/test_support.hpp"
 
@@ -270,6 +274,70 @@ TEST(ContactSolver, WarmStartSkipsRepeatedKeysOnAnyThreadCount) {
           << "contact " << i << ", " << threads << " threads";
     }
   }
+}
+
+TEST(ContactSolver, RowsThenLimitsGiveTheBitsOfSetContacts) {
+  // The world sets up the rows while a GPU computes the coefficients, then adds the limit
+  // surfaces: the same impulses and velocities, bit for bit, as setContacts in one call, warm
+  // started from a first solve, on one thread and two.
+  for (const int threads : {1, 2}) {
+    const ThreadPool pool(threads);
+    Column col = column(70);  // 280 contacts
+    for (size_t i = 0; i < col.contacts.size(); ++i) {
+      const float m = 0.3f + 0.05f * static_cast<float>(i % 7);
+      col.contacts[i].mu = box(m, 0.8f * m, 1.2f * m, m);
+    }
+    auto solve = [&](bool split) {
+      ContactSolver solver;
+      solver.setThreadPool(&pool);
+      const SolverSettings s = settings(LimitSurfaceKind::Polygon);
+      std::vector<Body> bodies = col.bodies;
+      std::vector<Contact> contacts = col.contacts;
+      for (int step = 0; step < 2; ++step) {
+        solver.begin(bodies, s);
+        if (split) {
+          solver.setContactRows(contacts);
+          solver.setContactLimits(contacts);
+        } else {
+          solver.setContacts(contacts, true);
+        }
+        solver.iterate(10);
+        solver.finish(bodies, contacts);
+      }
+      return std::make_pair(bodies, contacts);
+    };
+    const auto [whole_bodies, whole] = solve(false);
+    const auto [split_bodies, split] = solve(true);
+    for (size_t i = 0; i < whole.size(); ++i) {
+      EXPECT_EQ(split[i].lambda_n, whole[i].lambda_n) << "contact " << i;
+      EXPECT_EQ(split[i].lambda_t, whole[i].lambda_t) << "contact " << i;
+      EXPECT_EQ(split[i].lambda_b, whole[i].lambda_b) << "contact " << i;
+    }
+    for (size_t b = 0; b < whole_bodies.size(); ++b) {
+      EXPECT_EQ(split_bodies[b].linear_velocity, whole_bodies[b].linear_velocity) << "body " << b;
+      EXPECT_EQ(split_bodies[b].angular_velocity, whole_bodies[b].angular_velocity) << "body " << b;
+    }
+  }
+}
+
+TEST(ContactSolver, LimitsForOtherContactsThanTheRowsAreAnError) {
+  Column col = column(2);
+  ContactSolver solver;
+  solver.begin(col.bodies, settings(LimitSurfaceKind::Box));
+  solver.setContactRows(col.contacts);
+  const std::span<const Contact> fewer(col.contacts.data(), 3);
+  EXPECT_THROW(
+      {
+        try {
+          solver.setContactLimits(fewer);
+        } catch (const Error& e) {
+          EXPECT_NE(std::string(e.what()).find("setContactLimits got 3 contacts"),
+                    std::string::npos)
+              << e.what();
+          throw;
+        }
+      },
+      Error);
 }
 
 TEST(ContactSolver, SplitImpulseCorrectsPenetrationWithoutVelocity) {

@@ -303,6 +303,61 @@ TEST(WorldSolve, IdenticalRunsGiveIdenticalState) {
   EXPECT_NE(first, pileHash(149));
 }
 
+// FixedProvider's coefficients, written only when the world finishes the call (as a GPU
+// sampler's arrive): a world that read them before would solve with the wrong bounds.
+class DeferredProvider : public FrictionProvider {
+ public:
+  explicit DeferredProvider(DirectionalMu mu) : fixed_(mu) {}
+  std::string name() const override { return "deferred"; }
+  bool runsAsynchronously() const override { return true; }
+  void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
+                           const FrictionSettings& settings) override {
+    fixed_.computeCoefficients(bodies, contacts, settings);
+  }
+  void startCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
+                         const FrictionSettings& settings) override {
+    EXPECT_TRUE(contacts_.empty()) << "started twice";
+    for (Contact& c : contacts) c.mu = DirectionalMu::uniform(4, 0.0f);  // not there yet
+    bodies_ = bodies, contacts_ = contacts, settings_ = settings;
+    ++starts;
+  }
+  void finishCoefficients() override {
+    fixed_.computeCoefficients(bodies_, contacts_, settings_);
+    contacts_ = {};
+  }
+  int starts = 0;
+
+ private:
+  FixedProvider fixed_;
+  std::span<const Body> bodies_;
+  std::span<Contact> contacts_;
+  FrictionSettings settings_;
+};
+
+TEST(WorldSolve, AsynchronousProviderGivesTheBitsOfOneCall) {
+  // A pile settling on asymmetric friction, the provider's work split in start and finish
+  // (the solver's rows set up in between) and in one call: the same state, bit for bit.
+  const DirectionalMu mu = box4(0.2f, 0.3f, 0.4f, 0.5f);
+  auto run = [&](std::unique_ptr<FrictionProvider> provider) {
+    World world;
+    FrictionProvider& used = *provider;
+    world.setFrictionProvider(std::move(provider));
+    world.createBody(groundPlaneDesc());
+    addCubePile(world, 18, 2 * kHalf, 3);
+    int steps_with_contacts = 0;
+    for (int i = 0; i < 120; ++i) {
+      world.step();
+      steps_with_contacts += !world.contacts().empty();
+    }
+    if (auto* deferred = dynamic_cast<DeferredProvider*>(&used)) {
+      EXPECT_EQ(deferred->starts, steps_with_contacts);
+      EXPECT_GT(steps_with_contacts, 100);
+    }
+    return world.stateHash();
+  };
+  EXPECT_EQ(run(std::make_unique<DeferredProvider>(mu)), run(std::make_unique<FixedProvider>(mu)));
+}
+
 // Sub-steps: a falling cube with `substeps` 4 at dt moves exactly as with dt / 4 (semi-implicit
 // Euler: the same velocity and position sums), and a cube resting on the plane stays put
 // (its contact is carried along between sub-steps, so the penetration is not corrected four

@@ -44,6 +44,17 @@ class FrictionProvider {
   // Contacts already carry their frame (t, b). Body A of a contact is bodies[c.body_a].
   virtual void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                                    const FrictionSettings& settings) = 0;
+  // The same work in two calls, for a provider whose work runs on another device (a GPU):
+  // startCoefficients queues it, finishCoefficients waits for it and fills the contacts given
+  // to start, which stay alive and unchanged in between. The world sets up the solver's rows,
+  // which need no coefficients, in between. By default start does everything.
+  virtual void startCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
+                                 const FrictionSettings& settings) {
+    computeCoefficients(bodies, contacts, settings);
+  }
+  virtual void finishCoefficients() {}
+  // True when startCoefficients returns before the work is done, so that overlapping pays.
+  virtual bool runsAsynchronously() const { return false; }
   // Time spent in the last call, split as the paper's Table 1 does (ms).
   virtual double lastPatchTimeMs() const { return 0.0; }
   virtual double lastAveragingTimeMs() const { return 0.0; }

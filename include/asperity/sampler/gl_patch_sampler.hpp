@@ -42,6 +42,12 @@ class GlPatchSampler : public FrictionProvider {
   // contacts or surfaces, or a GL failure.
   void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                            const FrictionSettings& settings) override;
+  // Start renders every pass and queues the last read-backs; finish waits for them and
+  // averages. A call started again before it finished drops the unfinished one.
+  void startCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
+                         const FrictionSettings& settings) override;
+  void finishCoefficients() override;
+  bool runsAsynchronously() const override { return true; }
   double lastPatchTimeMs() const override;
   double lastAveragingTimeMs() const override;
   // Patch coherence as the cpu sampler's (FrictionSettings::reuse_pixels): contacts whose

@@ -195,6 +195,8 @@ class World {
   SolverSettings solverSettings() const;
   std::span<const SolverJoint> solverJoints(double t, double h);
   double substepDt() const { return settings_.dt / settings_.substeps; }
+  // The solver's start of a solve of length h at time t: velocities, masses, joint rows.
+  void beginSolve(double t, double h);
   void solveOnce(double t, double h);
   void solveSubsteps();
   void moveContacts(std::span<const Contact> base, std::span<const Transform> start);
@@ -216,6 +218,8 @@ class World {
   FrameCallback frame_callback_;
   StepProfile profile_;
   bool bodies_changed_ = true;
+  // The solver's contact rows were set up while an asynchronous provider worked (this step).
+  bool contact_rows_ready_ = false;
   double slop_ = 0.0;  // resolved linear slop (m)
   std::vector<SolverJoint> solver_joints_;
   double time_ = 0.0;

@@ -104,8 +104,21 @@ struct GlPatchSampler::Impl {
   patch::PatchReuse reuse;        // earlier samples (patch coherence)
   std::vector<Contact*> sampled;  // this call's contacts that are rendered
   int reused = 0;
+  // A call between startCoefficients and finishCoefficients.
+  struct InFlight {
+    bool active = false;
+    SavedState saved;
+    std::vector<uint8_t> kept;
+    std::span<const Body> bodies;
+    std::span<Contact> contacts;
+    FrictionSettings settings;
+    double busy_ms = 0.0;  // spent in start
+  } call;
 
   void setupVertexArray();
+  // Drops a call that was started and never finished (its caller threw in between): its
+  // reads are waited for and discarded, the caller's GL state restored.
+  void abandon();
   void collect(std::span<const Body> bodies, std::span<Contact* const> contacts,
                const FrictionSettings& settings, std::vector<PassContact>& out);
   void render(const FrictionSettings& settings);
@@ -305,18 +318,40 @@ std::string GlPatchSampler::renderer() const {
   return text != nullptr ? text : "";
 }
 
+void GlPatchSampler::Impl::abandon() {
+  if (!call.active) return;
+  for (glpatch::Readback& rb : readbacks) {
+    if (!rb.pending()) continue;
+    rb.map();
+    rb.unmap();
+  }
+  call.saved.restore();
+  call.active = false;
+}
+
 void GlPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                                          const FrictionSettings& settings) {
+  startCoefficients(bodies, contacts, settings);
+  finishCoefficients();
+}
+
+void GlPatchSampler::startCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
+                                       const FrictionSettings& settings) {
   validatePatchSettings(settings, "gl sampler", true);
   Impl& im = *impl_;
   if (im.context && !im.context->isCurrent()) im.context->makeCurrent();
+  im.abandon();
   const int r = settings.patch_resolution;
   if (r > im.options.atlas_size) {
     throw Error("gl sampler: patch_resolution " + std::to_string(r) + " exceeds the atlas (" +
                 std::to_string(im.options.atlas_size) + ")");
   }
   const Clock::time_point start = Clock::now();
-  const SavedState saved = SavedState::capture();
+  im.call.saved = SavedState::capture();
+  im.call.active = true;
+  im.call.bodies = bodies;
+  im.call.contacts = contacts;
+  im.call.settings = settings;
   im.averaging_ms = 0.0;
   im.passes = 0;
   im.atlas.ensure(im.options.atlas_size, im.options.float_targets, settings.directions / 4,
@@ -324,10 +359,10 @@ void GlPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span
   const int per_row = im.atlas.size() / r;
   const size_t per_pass = static_cast<size_t>(per_row * per_row / 2);
   // Contacts whose earlier sample still holds keep it; the others are rendered.
-  const std::vector<uint8_t> kept = im.reuse.reuse(bodies, contacts, settings);
+  im.call.kept = im.reuse.reuse(bodies, contacts, settings);
   im.sampled.clear();
   for (size_t i = 0; i < contacts.size(); ++i)
-    if (!kept[i]) im.sampled.push_back(&contacts[i]);
+    if (!im.call.kept[i]) im.sampled.push_back(&contacts[i]);
   im.reused = static_cast<int>(contacts.size() - im.sampled.size());
   const std::span<Contact* const> sampled(im.sampled);
   // Passes of at most per_pass contacts; pass p's read-back overlaps pass p + 1's rendering.
@@ -342,14 +377,25 @@ void GlPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span
     im.readbacks[static_cast<size_t>(slot)].start(im.atlas, ((tiles + per_row - 1) / per_row) * r);
     ++im.passes;
   }
+  // The device starts on what is queued while the caller works.
+  glFlush();
+  im.call.busy_ms = msSince(start);
+}
+
+void GlPatchSampler::finishCoefficients() {
+  Impl& im = *impl_;
+  if (!im.call.active) return;
+  const Clock::time_point start = Clock::now();
+  if (im.context && !im.context->isCurrent()) im.context->makeCurrent();
   // Drain the passes still in flight.
   for (int k = 0; k < 2; ++k) {
     const int slot = (im.passes + k) % 2;
-    if (im.readbacks[static_cast<size_t>(slot)].pending()) im.average(slot, settings);
+    if (im.readbacks[static_cast<size_t>(slot)].pending()) im.average(slot, im.call.settings);
   }
-  saved.restore();
-  im.reuse.remember(bodies, contacts, kept);
-  im.patch_ms = msSince(start) - im.averaging_ms;
+  im.call.saved.restore();
+  im.call.active = false;
+  im.reuse.remember(im.call.bodies, im.call.contacts, im.call.kept);
+  im.patch_ms = im.call.busy_ms + msSince(start) - im.averaging_ms;
 }
 
 void addGlPatchSampler(FrictionProviders& providers, const GlSamplerOptions& options) {

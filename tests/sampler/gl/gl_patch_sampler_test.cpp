@@ -7,7 +7,9 @@
 
 #include "asperity/gl/context.hpp"
 #include "asperity/sampler/cpu_patch_sampler.hpp"
+#include "asperity/scene/scene.hpp"
 #include "sampler/sampler_suite.hpp"
+#include "support/test_support.hpp"
 
 namespace asperity::sampler_test {
 namespace {
@@ -141,6 +143,73 @@ TEST(GlPatchSampler, ReusesTheSamplesOfContactsThatBarelyMoved) {
   sampler.forgetHistory();
   sampler.computeCoefficients(scene.bodies, moved, s);
   EXPECT_EQ(sampler.lastReusedCount(), 0);
+}
+
+TEST(GlPatchSampler, StartedCallFinishesWithTheNumbersOfOneCall) {
+  // start queues the rendering and returns; finish waits and averages. Between them the
+  // sampler's own GL state is bound; after finish the caller's is back. The numbers are those
+  // of computeCoefficients, bit for bit. A call started again before it finished is dropped.
+  gl::GlContext context;
+  GLuint fbo = 0;
+  glGenFramebuffers(1, &fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  GlSamplerOptions o;
+  o.use_current_context = true;
+  o.atlas_size = 64;  // several passes: the earlier ones are averaged inside start
+  GlPatchSampler sampler(o);
+  EXPECT_TRUE(sampler.runsAsynchronously());
+  Scene scene{{planeBody(roughMap(32, 1), 0.05, 1.0),
+               boxBody(Vec3(0.1, 0.1, 0.1), {Vec3(0, 0, 0.1)}, roughMap(32, 2), 0.08, 2.0)},
+              {}};
+  const FrictionSettings s = settings(4);
+  std::vector<Contact> whole = corners(scene, 40), split = whole, dropped = whole;
+  sampler.computeCoefficients(scene.bodies, whole, s);
+  sampler.startCoefficients(scene.bodies, dropped, s);
+  sampler.startCoefficients(scene.bodies, split, s);
+  sampler.finishCoefficients();
+  sampler.finishCoefficients();  // nothing in flight: does nothing
+  for (size_t i = 0; i < whole.size(); ++i) {
+    EXPECT_EQ(split[i].covered_pixels, whole[i].covered_pixels) << "contact " << i;
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(split[i].mu.mu[k], whole[i].mu.mu[k]) << "contact " << i;
+  }
+  GLint bound = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+  EXPECT_EQ(static_cast<GLuint>(bound), fbo);
+  glDeleteFramebuffers(1, &fbo);
+}
+
+// The gl sampler handed each step whole, so the world does not overlap it with the solver.
+class WholeCalls : public FrictionProvider {
+ public:
+  std::string name() const override { return "gl-whole"; }
+  void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
+                           const FrictionSettings& settings) override {
+    gl_.computeCoefficients(bodies, contacts, settings);
+  }
+
+ private:
+  GlPatchSampler gl_;
+};
+
+TEST(GlPatchSampler, WorldSetsUpTheSolverWhileItRendersWithTheSameBits) {
+  // The world sets up the solver's contact rows between start and finish: the state is the
+  // same, bit for bit, as with the sampler's work done in one call.
+  SceneDesc scene = loadScene(test::sourcePath("scenes/stacking.json"));
+  InstantiateOptions options;
+  addGlPatchSampler(options.providers);
+  options.providers.add("gl-whole", [] { return std::make_unique<WholeCalls>(); });
+  scene.sampler = "gl";
+  const std::unique_ptr<World> overlapped = instantiate(scene, options);
+  scene.sampler = "gl-whole";
+  const std::unique_ptr<World> whole = instantiate(scene, options);
+  size_t contacts = 0;
+  for (int i = 0; i < 40; ++i) {
+    overlapped->step();
+    whole->step();
+    contacts += overlapped->contacts().size();
+    ASSERT_EQ(overlapped->stateHash(), whole->stateHash()) << "step " << i;
+  }
+  EXPECT_GT(contacts, 0u);
 }
 
 TEST(GlPatchSampler, ReportsRendererAndRejectsBadAtlas) {
