@@ -91,8 +91,8 @@ struct SweepHit {
 template <class Filter>
 struct SweepHits : btCollisionWorld::ConvexResultCallback {
   Filter accepts;
-  std::vector<SweepHit> hits;
-  explicit SweepHits(Filter f) : accepts(f) {}
+  std::vector<SweepHit>& hits;  // the caller's, kept between sweeps
+  SweepHits(Filter f, std::vector<SweepHit>& out) : accepts(f), hits(out) { hits.clear(); }
   bool needsCollision(btBroadphaseProxy* proxy) const override {
     return accepts(static_cast<const btCollisionObject*>(proxy->m_clientObject)->getUserIndex());
   }
@@ -164,6 +164,9 @@ struct CollisionDetector::Impl {
 
   std::vector<std::pair<int, int>> plane_pairs;      // record pairs found by the broadphase
   std::vector<std::vector<Contact>> plane_contacts;  // per plane pair (collectPlanes)
+  std::vector<collision_detail::PlaneScratch> plane_scratch;  // per plane pair, kept
+  std::vector<std::pair<BodyId, BodyId>> touching_pairs;      // scratch of collectSwept
+  std::vector<SweepHit> sweep_hits;                           // scratch of collectSwept
   std::vector<std::pair<int, int>> sdf_pairs;
   std::vector<Contact> contacts;               // this call's contacts in the order found
   std::vector<CylinderSidePoint> side_points;  // scratch of collectCylinderSide
@@ -373,7 +376,8 @@ struct CollisionDetector::Impl {
                           const ShapeRecord& r1) const;
   // Plane pairs on the pool, each into its own buffer, appended in pair order.
   void collectPlanes();
-  void collectPlane(int r0, int r1, std::vector<Contact>& out) const;
+  void collectPlane(int r0, int r1, std::vector<Contact>& out,
+                    collision_detail::PlaneScratch& scratch) const;
   bool collectCylinderSide(int r0, int r1);
   void collectSwept();
   Contact sweptContact(const ShapeRecord& moving, const Vec3& displacement, const SweepHit& hit);
@@ -547,16 +551,20 @@ void CollisionDetector::Impl::collectPlanes() {
     featuresOf(records[static_cast<size_t>(r0)]);
     featuresOf(records[static_cast<size_t>(r1)]);
   }
-  if (plane_contacts.size() < plane_pairs.size()) plane_contacts.resize(plane_pairs.size());
+  if (plane_contacts.size() < plane_pairs.size()) {
+    plane_contacts.resize(plane_pairs.size());
+    plane_scratch.resize(plane_pairs.size());
+  }
   forEachOn(workers, plane_pairs.size(), 8, [&](size_t k) {
     plane_contacts[k].clear();
-    collectPlane(plane_pairs[k].first, plane_pairs[k].second, plane_contacts[k]);
+    collectPlane(plane_pairs[k].first, plane_pairs[k].second, plane_contacts[k], plane_scratch[k]);
   });
   for (size_t k = 0; k < plane_pairs.size(); ++k)
     contacts.insert(contacts.end(), plane_contacts[k].begin(), plane_contacts[k].end());
 }
 
-void CollisionDetector::Impl::collectPlane(int r0, int r1, std::vector<Contact>& out) const {
+void CollisionDetector::Impl::collectPlane(int r0, int r1, std::vector<Contact>& out,
+                                           collision_detail::PlaneScratch& scratch) const {
   // The plane is always B (its body is static or kinematic, the other one dynamic).
   const bool plane_first = records[static_cast<size_t>(r0)].shape.type == ShapeType::Plane;
   const ShapeRecord& ra = records[static_cast<size_t>(plane_first ? r1 : r0)];
@@ -570,7 +578,7 @@ void CollisionDetector::Impl::collectPlane(int r0, int r1, std::vector<Contact>&
       speculative_time * (std::max(0.0, (rb.velocity - ra.velocity).dot(plane.normal)) +
                           ra.angular_speed * ra.bounding_radius);
   if (sweep > 0.25 * ra.size) reach = std::max(reach, sweep);
-  for (const PlanePoint& p : planePoints(ra.shape, ra.world, plane, reach)) {
+  for (const PlanePoint& p : planePoints(ra.shape, ra.world, plane, reach, scratch)) {
     Contact c;
     c.body_a = ra.body, c.body_b = rb.body;
     c.shape_a = ra.index, c.shape_b = rb.index;
@@ -628,7 +636,7 @@ void CollisionDetector::Impl::collectSwept() {
   if (speculative_time <= 0.0 || !world) return;
   // The pairs already in contact, gathered only once a fast shape needs them (a resting pile
   // has none, and thousands of contacts).
-  std::set<std::pair<BodyId, BodyId>> touching;
+  std::vector<std::pair<BodyId, BodyId>>& touching = touching_pairs;
   bool gathered = false;
   for (size_t i = 0; i < records.size(); ++i) {
     const ShapeRecord& r = records[i];
@@ -636,14 +644,16 @@ void CollisionDetector::Impl::collectSwept() {
     const Vec3 displacement = speculative_time * r.velocity;
     if (displacement.norm() <= 0.25 * r.size) continue;
     if (!gathered) {
-      for (const Contact& c : contacts) touching.insert({c.body_a, c.body_b});
+      touching.clear();
+      for (const Contact& c : contacts) touching.emplace_back(c.body_a, c.body_b);
+      std::sort(touching.begin(), touching.end());
       gathered = true;
     }
     const int self = static_cast<int>(i);
     auto accepts = [this, self](int other) {
       return !isPlanePair(self, other) && shouldCollide(self, other);
     };
-    SweepHits<decltype(accepts)> sweep(accepts);
+    SweepHits<decltype(accepts)> sweep(accepts, sweep_hits);
     const btTransform from = toBt(r.world, scale);
     btTransform to = from;
     to.setOrigin(from.getOrigin() + toBt(displacement * scale));
@@ -655,7 +665,7 @@ void CollisionDetector::Impl::collectSwept() {
       const ShapeRecord& other = records[static_cast<size_t>(hit.record)];
       const auto pair =
           isA(r, other) ? std::pair{r.body, other.body} : std::pair{other.body, r.body};
-      if (touching.count(pair)) continue;
+      if (std::binary_search(touching.begin(), touching.end(), pair)) continue;
       contacts.push_back(sweptContact(r, displacement, hit));
     }
   }

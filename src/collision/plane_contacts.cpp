@@ -2,16 +2,18 @@
 #include "collision/plane_contacts.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <span>
 
 namespace asperity::collision_detail {
 
 namespace {
 
-// The exact candidate points of a shape's surface that can be lowest against `n`.
-std::vector<Vec3> candidates(const Shape& shape, const Transform& world, const Vec3& n) {
-  std::vector<Vec3> out;
+// The exact candidate points of a shape's surface that can be lowest against `n`, into `out`.
+void candidates(const Shape& shape, const Transform& world, const Vec3& n, std::vector<Vec3>& out) {
+  out.clear();
   switch (shape.type) {
     case ShapeType::Sphere:
       out.push_back(world.position - shape.radius * n);
@@ -59,12 +61,11 @@ std::vector<Vec3> candidates(const Shape& shape, const Transform& world, const V
     case ShapeType::Plane:
       break;
   }
-  return out;
 }
 
 // Index of the point maximising score(i) among those not yet chosen.
 template <typename Score>
-int best(const std::vector<PlanePoint>& pts, const std::vector<int>& chosen, Score score) {
+int best(const std::vector<PlanePoint>& pts, std::span<const int> chosen, Score score) {
   int arg = -1;
   double top = -1.0;
   for (int i = 0; i < static_cast<int>(pts.size()); ++i) {
@@ -75,29 +76,28 @@ int best(const std::vector<PlanePoint>& pts, const std::vector<int>& chosen, Sco
   return arg;
 }
 
-// Four spread points: the deepest, the farthest from it, the largest triangle, then the
-// point farthest from the three chosen.
-std::vector<PlanePoint> reduceToFour(const std::vector<PlanePoint>& pts, const Vec3& n) {
-  std::vector<int> chosen{0};
+// Four spread points of `pts` into `out`: the deepest, the farthest from it, the largest
+// triangle, then the point farthest from the three chosen.
+void reduceToFour(const std::vector<PlanePoint>& pts, const Vec3& n, std::vector<PlanePoint>& out) {
+  std::array<int, 4> chosen{0, -1, -1, -1};
   for (size_t i = 1; i < pts.size(); ++i) {
     if (pts[i].distance < pts[static_cast<size_t>(chosen[0])].distance)
       chosen[0] = static_cast<int>(i);
   }
   const Vec3 p0 = pts[static_cast<size_t>(chosen[0])].point;
-  chosen.push_back(
-      best(pts, chosen, [&](const PlanePoint& p) { return (p.point - p0).squaredNorm(); }));
+  chosen[1] = best(pts, std::span(chosen.data(), 1),
+                   [&](const PlanePoint& p) { return (p.point - p0).squaredNorm(); });
   const Vec3 p1 = pts[static_cast<size_t>(chosen[1])].point;
-  chosen.push_back(best(pts, chosen, [&](const PlanePoint& p) {
+  chosen[2] = best(pts, std::span(chosen.data(), 2), [&](const PlanePoint& p) {
     return std::abs((p1 - p0).cross(p.point - p0).dot(n));
-  }));
+  });
   const Vec3 p2 = pts[static_cast<size_t>(chosen[2])].point;
-  chosen.push_back(best(pts, chosen, [&](const PlanePoint& p) {
+  chosen[3] = best(pts, std::span(chosen.data(), 3), [&](const PlanePoint& p) {
     return std::min(
         {(p.point - p0).squaredNorm(), (p.point - p1).squaredNorm(), (p.point - p2).squaredNorm()});
-  }));
-  std::vector<PlanePoint> out;
+  });
+  out.clear();
   for (int c : chosen) out.push_back(pts[static_cast<size_t>(c)]);
-  return out;
 }
 
 }  // namespace
@@ -110,17 +110,21 @@ WorldPlane worldPlane(const Shape& plane, const Transform& plane_world) {
   return out;
 }
 
-std::vector<PlanePoint> planePoints(const Shape& shape, const Transform& world,
-                                    const WorldPlane& plane, double max_distance) {
+const std::vector<PlanePoint>& planePoints(const Shape& shape, const Transform& world,
+                                           const WorldPlane& plane, double max_distance,
+                                           PlaneScratch& scratch) {
   // Signed distances of all candidates; keep those within reach.
-  std::vector<PlanePoint> pts;
-  const std::vector<Vec3> cand = candidates(shape, world, plane.normal);
-  for (size_t i = 0; i < cand.size(); ++i) {
-    const double d = plane.normal.dot(cand[i]) - plane.offset;
-    if (d < max_distance) pts.push_back({static_cast<int>(i), cand[i], d});
+  candidates(shape, world, plane.normal, scratch.candidates);
+  std::vector<PlanePoint>& near = scratch.near;
+  near.clear();
+  for (size_t i = 0; i < scratch.candidates.size(); ++i) {
+    const Vec3& p = scratch.candidates[i];
+    const double d = plane.normal.dot(p) - plane.offset;
+    if (d < max_distance) near.push_back({static_cast<int>(i), p, d});
   }
-  if (pts.size() <= 4) return pts;
-  return reduceToFour(pts, plane.normal);
+  if (near.size() <= 4) return near;
+  reduceToFour(near, plane.normal, scratch.points);
+  return scratch.points;
 }
 
 }  // namespace asperity::collision_detail

@@ -27,9 +27,17 @@ struct WorldPlane {
 };
 WorldPlane worldPlane(const Shape& plane, const Transform& plane_world);
 
+// Buffers of planePoints, kept by the caller so that a step allocates nothing once they grew.
+struct PlaneScratch {
+  std::vector<Vec3> candidates;
+  std::vector<PlanePoint> near, points;
+};
+
 // Candidate points of `shape` (at `world`) closer to the plane than `max_distance`; at most
-// four, spread out (the deepest, then the ones spanning the largest area).
-std::vector<PlanePoint> planePoints(const Shape& shape, const Transform& world,
-                                    const WorldPlane& plane, double max_distance);
+// four, spread out (the deepest, then the ones spanning the largest area). The result lives in
+// `scratch` until its next use.
+const std::vector<PlanePoint>& planePoints(const Shape& shape, const Transform& world,
+                                           const WorldPlane& plane, double max_distance,
+                                           PlaneScratch& scratch);
 
 }  // namespace asperity::collision_detail

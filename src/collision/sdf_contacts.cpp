@@ -98,19 +98,21 @@ SurfaceSamples surfaceSamples(const TriangleMeshData& mesh, double spacing, size
   return out;
 }
 
-std::vector<SdfHit> sdfHits(const SignedDistanceField& field, const Transform& field_world,
-                            std::span<const Vec3> points, const Transform& points_world,
-                            const SdfQuery& query) {
+const std::vector<SdfHit>& sdfHits(const SignedDistanceField& field, const Transform& field_world,
+                                   std::span<const Vec3> points, const Transform& points_world,
+                                   const SdfQuery& query, SdfHitBuffers& buffers) {
   return sdfHits([&field](const Vec3& p) { return field.sample(p); }, field_world, points,
-                 points_world, query);
+                 points_world, query, buffers);
 }
 
-std::vector<SdfHit> sdfHits(const DistanceFn& field, const Transform& field_world,
-                            std::span<const Vec3> points, const Transform& points_world,
-                            const SdfQuery& query, const SampleBlocks* blocks) {
+const std::vector<SdfHit>& sdfHits(const DistanceFn& field, const Transform& field_world,
+                                   std::span<const Vec3> points, const Transform& points_world,
+                                   const SdfQuery& query, SdfHitBuffers& buffers,
+                                   const SampleBlocks* blocks) {
   // Every query point in the field's frame; keep those below the distance threshold.
   const Transform to_field = field_world.inverse() * points_world;
-  std::vector<SdfHit> hits;
+  std::vector<SdfHit>& hits = buffers.hits;
+  hits.clear();
   const auto test = [&](const Vec3& point, size_t i) {
     const Vec3 local = to_field.apply(point);
     if (!query.bounds.contains(local)) return;
@@ -142,7 +144,8 @@ std::vector<SdfHit> sdfHits(const DistanceFn& field, const Transform& field_worl
   std::sort(hits.begin(), hits.end(), [](const SdfHit& a, const SdfHit& b) {
     return a.distance != b.distance ? a.distance < b.distance : a.vertex < b.vertex;
   });
-  std::vector<SdfHit> kept;
+  std::vector<SdfHit>& kept = buffers.kept;
+  kept.clear();
   const double spacing2 = query.min_spacing * query.min_spacing;
   for (const SdfHit& h : hits) {
     if (static_cast<int>(kept.size()) >= query.max_hits) break;

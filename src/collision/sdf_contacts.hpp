@@ -56,15 +56,22 @@ struct SdfQuery {
 // A signed distance in the field shape's frame: a grid field or an exact primitive.
 using DistanceFn = std::function<SignedDistanceField::Sample(const Vec3&)>;
 
+// Buffers of sdfHits, kept by the caller so that a step allocates nothing once they grew.
+struct SdfHitBuffers {
+  std::vector<SdfHit> hits, kept;
+};
+
 // Queries `points` (in the frame `points_world`) against `field` (in `field_world`) and
-// returns the kept hits, deepest first (ties by vertex index, so the order is deterministic).
-// `blocks`, when given, group the points (SurfaceSamples::blocks): a block outside
-// query.bounds is skipped whole, with the same hits as testing each of its points.
-std::vector<SdfHit> sdfHits(const DistanceFn& field, const Transform& field_world,
-                            std::span<const Vec3> points, const Transform& points_world,
-                            const SdfQuery& query, const SampleBlocks* blocks = nullptr);
-std::vector<SdfHit> sdfHits(const SignedDistanceField& field, const Transform& field_world,
-                            std::span<const Vec3> points, const Transform& points_world,
-                            const SdfQuery& query);
+// returns the kept hits (in `buffers`, until their next use), deepest first (ties by vertex
+// index, so the order is deterministic). `blocks`, when given, group the points
+// (SurfaceSamples::blocks): a block outside query.bounds is skipped whole, with the same hits
+// as testing each of its points.
+const std::vector<SdfHit>& sdfHits(const DistanceFn& field, const Transform& field_world,
+                                   std::span<const Vec3> points, const Transform& points_world,
+                                   const SdfQuery& query, SdfHitBuffers& buffers,
+                                   const SampleBlocks* blocks = nullptr);
+const std::vector<SdfHit>& sdfHits(const SignedDistanceField& field, const Transform& field_world,
+                                   std::span<const Vec3> points, const Transform& points_world,
+                                   const SdfQuery& query, SdfHitBuffers& buffers);
 
 }  // namespace asperity::collision_detail

@@ -132,8 +132,8 @@ void queryContacts(const ShapeRecord& field, const ShapeRecord& query, bool fiel
   const SurfaceSamples& samples = res.samples(query);
   const ShapeRecord& ra = field_is_a ? field : query;
   const ShapeRecord& rb = field_is_a ? query : field;
-  for (const SdfHit& h :
-       sdfHits(distance, field.world, samples.points, query.world, q, &samples.blocks)) {
+  for (const SdfHit& h : sdfHits(distance, field.world, samples.points, query.world, q,
+                                 res.hitBuffers(), &samples.blocks)) {
     // The query point is the deepest of its shape; the field gives the nearest surface point.
     Contact c;
     c.body_a = ra.body, c.body_b = rb.body;

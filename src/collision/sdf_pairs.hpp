@@ -24,12 +24,15 @@ class SdfResources {
   void reset(const CollisionSettings& settings);
   const SignedDistanceField& field(const ShapeRecord& r);
   const SurfaceSamples& samples(const ShapeRecord& r);
+  // The queries' buffers (pairs are collected one after the other).
+  SdfHitBuffers& hitBuffers() { return hit_buffers_; }
 
  private:
   CollisionSettings settings_;
   std::map<std::shared_ptr<const TriangleMeshData>, std::shared_ptr<const SignedDistanceField>>
       fields_;
   std::map<std::pair<BodyId, int>, SurfaceSamples> samples_;
+  SdfHitBuffers hit_buffers_;
 };
 
 // Contacts of one signed-distance pair, appended to `out` (SPEC 1 conventions).

@@ -185,14 +185,14 @@ void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::spa
                                           const FrictionSettings& settings) {
   validatePatchSettings(settings, "cpu sampler");
   // Contacts whose earlier sample still holds keep it; the others are sampled.
-  const std::vector<uint8_t> reused = reuse_->reuse(bodies, contacts, settings);
-  reused_count_ = static_cast<int>(std::count(reused.begin(), reused.end(), uint8_t{1}));
+  reuse_->reuse(bodies, contacts, settings, reused_);
+  reused_count_ = static_cast<int>(std::count(reused_.begin(), reused_.end(), uint8_t{1}));
   if (!pool_ || pool_->concurrency() == 1) {
     // One contact after the other; scratch is reused.
     State& st = *state_;
     st.patch_ms = st.averaging_ms = 0.0;
     for (size_t i = 0; i < contacts.size(); ++i)
-      if (!reused[i]) st.sample(bodies, contacts[i], settings, nullptr);
+      if (!reused_[i]) st.sample(bodies, contacts[i], settings, nullptr);
     patch_ms_ = st.patch_ms;
     averaging_ms_ = st.averaging_ms;
   } else {
@@ -202,7 +202,7 @@ void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::spa
       worker_states_.push_back(std::make_unique<State>());
     for (auto& st : worker_states_) st->patch_ms = st->averaging_ms = 0.0;
     pool_->forEach(contacts.size(), 4, [&](size_t i) {
-      if (reused[i]) return;
+      if (reused_[i]) return;
       State& st = *worker_states_[static_cast<size_t>(ThreadPool::slot())];
       st.sample(bodies, contacts[i], settings, nullptr);
     });
@@ -212,7 +212,7 @@ void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::spa
       averaging_ms_ += st->averaging_ms;
     }
   }
-  reuse_->remember(bodies, contacts, reused);
+  reuse_->remember(bodies, contacts, reused_);
 }
 
 }  // namespace asperity

@@ -62,16 +62,16 @@ PatchReuse::Sample PatchReuse::record(std::span<const Body> bodies, const Contac
   return s;
 }
 
-std::vector<uint8_t> PatchReuse::reuse(std::span<const Body> bodies, std::span<Contact> contacts,
-                                       const FrictionSettings& settings) {
-  std::vector<uint8_t> reused(contacts.size(), 0);
+void PatchReuse::reuse(std::span<const Body> bodies, std::span<Contact> contacts,
+                       const FrictionSettings& settings, std::vector<uint8_t>& reused) {
+  reused.assign(contacts.size(), 0);
   if (!sameSettings(settings, settings_)) {
     keys_.clear();
     samples_.clear();
   }
   settings_ = settings;
   tolerance_ = settings.reuse_pixels * settings.patch_width / settings.patch_resolution;
-  if (!(tolerance_ > 0.0)) return reused;
+  if (!(tolerance_ > 0.0)) return;
   // Along the normal: the same share of the depth clip's margin (0.01 w, SPEC 3).
   const Tolerance tol{tolerance_, settings.reuse_pixels * 0.01 * settings.patch_width};
   const double half = 0.5 * settings.patch_width;
@@ -88,7 +88,6 @@ std::vector<uint8_t> PatchReuse::reuse(std::span<const Body> bodies, std::span<C
     c.fallback = s.fallback;
     reused[i] = 1;
   }
-  return reused;
 }
 
 void PatchReuse::remember(std::span<const Body> bodies, std::span<const Contact> contacts,

@@ -25,10 +25,11 @@ namespace asperity::patch {
 
 class PatchReuse {
  public:
-  // For each contact: 1 when its last sample still holds (and is copied into it), else 0.
-  // Every contact gets 0 when settings.reuse_pixels is 0 or the settings changed.
-  std::vector<uint8_t> reuse(std::span<const Body> bodies, std::span<Contact> contacts,
-                             const FrictionSettings& settings);
+  // For each contact, into `reused` (the caller's, so that its room is kept): 1 when its last
+  // sample still holds (and is copied into it), else 0. Every contact gets 0 when
+  // settings.reuse_pixels is 0 or the settings changed.
+  void reuse(std::span<const Body> bodies, std::span<Contact> contacts,
+             const FrictionSettings& settings, std::vector<uint8_t>& reused);
   // After sampling the others: remembers the freshly sampled contacts as they are now, keeps
   // the reused ones' original record and forgets the contacts that are gone.
   void remember(std::span<const Body> bodies, std::span<const Contact> contacts,

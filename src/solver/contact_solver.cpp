@@ -66,8 +66,11 @@ void ContactSolver::begin(std::span<const Body> bodies, const SolverSettings& se
   });
   rows_.clear();
   order_.clear();
-  limits_ = emptyLimits(settings.limit_surface,
-                        std::make_index_sequence<std::tuple_size_v<LimitSurfaceTypes>>());
+  // A new vector only when the kind changed: the old one keeps its room for this step's rows.
+  if (limits_.index() != static_cast<size_t>(settings.limit_surface)) {
+    limits_ = emptyLimits(settings.limit_surface,
+                          std::make_index_sequence<std::tuple_size_v<LimitSurfaceTypes>>());
+  }
   balls_.clear();
   axes_.clear();
   warm_started_ = false;
@@ -242,7 +245,11 @@ void ContactSolver::storeInSweepOrder() {
   rows_.swap(sorted_);
   auto permute = [&](auto& limits) {
     if (limits.size() != n) return;
-    std::remove_reference_t<decltype(limits)> sorted(n);
+    // Into the spare vector of the same kind, kept from step to step.
+    using Limits = std::remove_reference_t<decltype(limits)>;
+    if (!std::holds_alternative<Limits>(sorted_limits_)) sorted_limits_.template emplace<Limits>();
+    Limits& sorted = std::get<Limits>(sorted_limits_);
+    sorted.resize(n);
     forEachItem(pool_, n, 256,
                 [&](size_t k) { sorted[k] = std::move(limits[static_cast<size_t>(order_[k])]); });
     limits.swap(sorted);

@@ -191,6 +191,7 @@ class ContactSolver {
   std::vector<int> slot_;           // contact i's row in rows_ (rows_ is stored in sweep order)
   std::vector<ContactRow> sorted_;  // scratch of storeInSweepOrder
   LimitVectors limits_;             // one per contact row, of the settings' limit surface
+  LimitVectors sorted_limits_;      // spare of the same kind for the copy into sweep order
   bool friction_ = true;
   bool warm_started_ = false;
   std::vector<BallRow> balls_;

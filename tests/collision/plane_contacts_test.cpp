@@ -34,7 +34,8 @@ TEST(PlaneContacts, WorldPlaneOfATiltedOffsetPlane) {
 
 TEST(PlaneContacts, CylinderLyingTouchesAtBothRimEnds) {
   const Transform world{Vec3(0, 0, 0.049), Quat(Eigen::AngleAxisd(kPi / 2, Vec3::UnitY()))};
-  const auto pts = planePoints(cylinder(0.05, 0.1), world, WorldPlane{}, 0.0);
+  PlaneScratch scratch;
+  const auto& pts = planePoints(cylinder(0.05, 0.1), world, WorldPlane{}, 0.0, scratch);
   ASSERT_EQ(pts.size(), 2u);
   for (const PlanePoint& p : pts) {
     EXPECT_TRUE(near(p.distance, -0.001, 0, 1e-12));
@@ -47,7 +48,8 @@ TEST(PlaneContacts, TiltedCylinderTouchesAtItsLowestRimPoint) {
   // Lowest rim point at z = center - hh cos(tilt) - r sin(tilt).
   const double z = hh * std::cos(tilt) + r * std::sin(tilt) - 0.002;
   const Transform world{Vec3(0, 0, z), Quat(Eigen::AngleAxisd(tilt, Vec3::UnitX()))};
-  const auto pts = planePoints(cylinder(r, hh), world, WorldPlane{}, 0.0);
+  PlaneScratch scratch;
+  const auto& pts = planePoints(cylinder(r, hh), world, WorldPlane{}, 0.0, scratch);
   ASSERT_EQ(pts.size(), 1u);
   EXPECT_TRUE(near(pts[0].distance, -0.002, 0, 1e-12));
 }
@@ -62,8 +64,9 @@ TEST(PlaneContacts, ManyCoplanarVerticesReduceToFourSpreadOnes) {
   Shape hull;
   hull.type = ShapeType::ConvexHull;
   hull.mesh = mesh;
-  const auto pts =
-      planePoints(hull, Transform{Vec3(0, 0, 0.099), Quat::Identity()}, WorldPlane{}, 0.0);
+  PlaneScratch scratch;
+  const auto& pts =
+      planePoints(hull, Transform{Vec3(0, 0, 0.099), Quat::Identity()}, WorldPlane{}, 0.0, scratch);
   ASSERT_EQ(pts.size(), 4u);
   // The quadrilateral covers at least 90% of the largest one inscribed (a square of area 2).
   Eigen::Matrix<double, 2, 4> xy;

@@ -51,6 +51,7 @@ class CpuPatchSampler : public FrictionProvider {
   std::unique_ptr<State> state_;                       // the calling thread's scratch
   std::vector<std::unique_ptr<State>> worker_states_;  // one per pool thread
   std::unique_ptr<patch::PatchReuse> reuse_;           // earlier samples (patch coherence)
+  std::vector<uint8_t> reused_;                        // this call's reuse decisions
   const ThreadPool* pool_ = nullptr;
   double patch_ms_ = 0.0;
   double averaging_ms_ = 0.0;

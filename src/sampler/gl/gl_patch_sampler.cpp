@@ -359,7 +359,7 @@ void GlPatchSampler::startCoefficients(std::span<const Body> bodies, std::span<C
   const int per_row = im.atlas.size() / r;
   const size_t per_pass = static_cast<size_t>(per_row * per_row / 2);
   // Contacts whose earlier sample still holds keep it; the others are rendered.
-  im.call.kept = im.reuse.reuse(bodies, contacts, settings);
+  im.reuse.reuse(bodies, contacts, settings, im.call.kept);
   im.sampled.clear();
   for (size_t i = 0; i < contacts.size(); ++i)
     if (!im.call.kept[i]) im.sampled.push_back(&contacts[i]);
