@@ -44,8 +44,7 @@ FrameInputs World::frameInputs() {
   in.fallback_axis = settings_.fallback_axis;
   if (frame_callback_) in.callback = [this](const Contact& c) { return frame_callback_(*this, c); };
   in.frictionless_solve = [this](std::span<const Contact> contacts) -> const ContactSolver& {
-    solver_->begin(bodies_, solverSettings());
-    solver_->setJoints(solverJoints(time_, settings_.dt));
+    beginSolve(time_, settings_.dt);
     solver_->setContacts(contacts, false);
     solver_->iterate(settings_.auto_frame_iterations);
     return *solver_;
