@@ -2,6 +2,7 @@
 #include "sampler/patch_geometry.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "asperity/error.hpp"
@@ -57,8 +58,22 @@ void pushPolygon(const Volume& volume, PolygonVertex* v, int count, bool smooth,
   rasterisePlanar(volume, raster.planars.back(), id, raster);
 }
 
+// Whether a box face, centred at c with edge half-vectors et and eb (contact frame), surely
+// misses the volume: beyond the depth clip, or more than a pixel beyond the footprint (where
+// makePlanar rejects it too); margins far above rounding.
+bool faceMissesVolume(const Volume& volume, const Vec3& c, const Vec3& et, const Vec3& eb) {
+  const Vec3 reach = et.cwiseAbs() + eb.cwiseAbs();
+  const double depth = volume.half_depth + 1e-9 * volume.width;
+  const double side = 0.5 * volume.width + volume.pixel;
+  return c.z() - reach.z() > depth || c.z() + reach.z() < -depth ||
+         std::abs(c.x()) - reach.x() > side || std::abs(c.y()) - reach.y() > side;
+}
+
 void rasteriseBox(const Volume& volume, const Shape& shape, const Placement& pl,
                   SurfaceRaster& raster) {
+  static const std::array<SurfaceFrame, 6> kFaces = {boxFaceFrame(0), boxFaceFrame(1),
+                                                     boxFaceFrame(2), boxFaceFrame(3),
+                                                     boxFaceFrame(4), boxFaceFrame(5)};
   const double scale = detail::textureScale(shape);
   const Vec3 h = shape.half_extents;
   // Quick reject: the bounding sphere misses the volume.
@@ -69,13 +84,13 @@ void rasteriseBox(const Volume& volume, const Shape& shape, const Placement& pl,
     return;
   }
   // Each face that faces the other body is a quad (corners counter-clockwise seen from outside).
-  for (int face = 0; face < 6; ++face) {
-    const SurfaceFrame f = boxFaceFrame(face);
+  for (const SurfaceFrame& f : kFaces) {
     const Vec3 nc = pl.m * f.n;
     if (!facesOther(raster.side, nc.z())) continue;
+    const Vec3 centre = f.n.cwiseProduct(h), et = f.t.cwiseProduct(h), eb = f.b.cwiseProduct(h);
+    if (faceMissesVolume(volume, pl.m * centre + pl.o, pl.m * et, pl.m * eb)) continue;
     const SurfaceFrame tex = rotateTexture(f, shape.surface.texture_rotation);
     const Vec3 tc = pl.m * tex.t, bc = pl.m * tex.b;
-    const Vec3 centre = f.n.cwiseProduct(h), et = f.t.cwiseProduct(h), eb = f.b.cwiseProduct(h);
     static constexpr double su[4] = {-1, 1, 1, -1}, sv[4] = {-1, -1, 1, 1};
     PolygonVertex v[4];
     for (int k = 0; k < 4; ++k) {

@@ -97,6 +97,56 @@ void SurfaceRaster::reset(Side s, int resolution) {
   curveds.clear();
 }
 
+namespace {
+
+// The polygon's part within the depth clip, |z| <= h (widened far beyond rounding): its extent
+// in x and y, as [lo, hi] per axis. False when no part is within.
+bool extentWithinDepth(const Volume& volume, const PolygonVertex* vtx, int count,
+                       std::array<double, 2>& lo, std::array<double, 2>& hi) {
+  const double h = volume.half_depth + 1e-9 * volume.width;
+  // Sutherland-Hodgman against z <= h, then -z <= h (a convex polygon of up to 4 corners
+  // gains at most one corner per plane).
+  std::array<Vec3, 8> points, clipped;
+  int n = count;
+  for (int k = 0; k < count; ++k) points[static_cast<size_t>(k)] = vtx[k].p;
+  for (const double sign : {1.0, -1.0}) {
+    int m = 0;
+    for (int k = 0; k < n; ++k) {
+      const Vec3& p = points[static_cast<size_t>(k)];
+      const Vec3& q = points[static_cast<size_t>((k + 1) % n)];
+      const double dp = sign * p.z() - h, dq = sign * q.z() - h;
+      if (dp <= 0.0) clipped[static_cast<size_t>(m++)] = p;
+      if ((dp <= 0.0) != (dq <= 0.0))
+        clipped[static_cast<size_t>(m++)] = p + (q - p) * (dp / (dp - dq));
+    }
+    n = m;
+    points.swap(clipped);
+  }
+  if (n == 0) return false;
+  lo = {kInf, kInf}, hi = {-kInf, -kInf};
+  for (int k = 0; k < n; ++k) {
+    for (int axis = 0; axis < 2; ++axis) {
+      const double v = points[static_cast<size_t>(k)][axis];
+      lo[static_cast<size_t>(axis)] = std::min(lo[static_cast<size_t>(axis)], v);
+      hi[static_cast<size_t>(axis)] = std::max(hi[static_cast<size_t>(axis)], v);
+    }
+  }
+  return true;
+}
+
+// Whether some pixel centre lies in [a, b] along one axis, give or take far more than rounding
+// (pixelRange's range is wider by a pixel on each side).
+bool centreWithin(const Volume& volume, double a, double b) {
+  const double slack = 1e-6;
+  const double half = 0.5 * volume.width;
+  const double first = std::max(0.0, std::ceil((a + half) / volume.pixel - 0.5 - slack));
+  const double last =
+      std::min(volume.resolution - 1.0, std::floor((b + half) / volume.pixel - 0.5 + slack));
+  return first <= last;
+}
+
+}  // namespace
+
 bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool smooth,
                 const Material& material, Planar& out) {
   // Reject: entirely beyond the depth clip or the footprint.
@@ -111,6 +161,16 @@ bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool 
   pixelRange(volume, xmin, xmax, out.i0, out.i1);
   pixelRange(volume, ymin, ymax, out.j0, out.j1);
   if (out.i0 > out.i1 || out.j0 > out.j1) return false;
+  // A face seen nearly edge-on (a box's side beyond its bottom face) reaches the depth clip in
+  // a thin band only: when no pixel centre can lie in that band's extent, nothing is covered.
+  // Worth the clipping where the range is two pixels or less across (a band between centres).
+  if (out.i1 - out.i0 <= 1 || out.j1 - out.j0 <= 1) {
+    std::array<double, 2> lo{xmin, ymin}, hi{xmax, ymax};
+    if (zmin < -volume.half_depth || zmax > volume.half_depth) {
+      if (!extentWithinDepth(volume, vtx, count, lo, hi)) return false;
+    }
+    if (!centreWithin(volume, lo[0], hi[0]) || !centreWithin(volume, lo[1], hi[1])) return false;
+  }
   // Edge-on (zero projected area) primitives cover no pixel centre.
   const Vec3 &p0 = vtx[0].p, &p1 = vtx[1].p, &p2 = vtx[2].p;
   Eigen::Matrix2d m;
@@ -216,6 +276,58 @@ void clipEdge(const EdgeBound& eb, const Edge& e, double y, int j, int resolutio
   }
 }
 
+// The constraints that cut a primitive's pixel box: its edges, and the depth clip, that do not
+// hold at every pixel centre in the box. The others are left out of the row clipping and the
+// exact tests, which they would pass everywhere (a plane or a large face seen through the
+// patch has none; a box corner has two edges).
+struct Cuts {
+  std::array<int, 4> edges{};
+  int edge_count = 0;
+  bool depth = false;
+};
+
+// Whether the affine c + dx x + dy y stays above `floor` over the box with corners xs x ys,
+// by a margin far above the rounding of evaluating it at a pixel centre (an affine function is
+// extreme at the corners).
+bool aboveOverBox(double c, double dx, double dy, double floor, const double (&xs)[2],
+                  const double (&ys)[2]) {
+  const double scale = std::abs(c) + std::abs(dx) * std::max(std::abs(xs[0]), std::abs(xs[1])) +
+                       std::abs(dy) * std::max(std::abs(ys[0]), std::abs(ys[1]));
+  const double margin = 1e-9 * scale + std::abs(floor) * 1e-9;
+  for (double x : xs) {
+    for (double y : ys) {
+      if (!(c + dx * x + dy * y > floor + margin)) return false;
+    }
+  }
+  return true;
+}
+
+Cuts cutsWithin(const Volume& volume, const Planar& prim, int j0, int j1) {
+  const double xs[2] = {volume.centreX(prim.i0), volume.centreX(prim.i1)};
+  const double ys[2] = {volume.centreX(j0), volume.centreX(j1)};
+  Cuts cuts;
+  for (int k = 0; k < prim.edge_count; ++k) {
+    const Edge& e = prim.edges[static_cast<size_t>(k)];
+    if (!aboveOverBox(e.c, e.a, e.b, 0.0, xs, ys))
+      cuts.edges[static_cast<size_t>(cuts.edge_count++)] = k;
+  }
+  // |z| <= h: z > -h and -z > -h.
+  const double h = volume.half_depth;
+  cuts.depth = !aboveOverBox(prim.z.c, prim.z.dx, prim.z.dy, -h, xs, ys) ||
+               !aboveOverBox(-prim.z.c, -prim.z.dx, -prim.z.dy, -h, xs, ys);
+  return cuts;
+}
+
+// insidePlanar over the cutting constraints only (the others hold in the box).
+bool insideCuts(const Planar& prim, const Cuts& cuts, double h, double x, double y) {
+  for (int k = 0; k < cuts.edge_count; ++k) {
+    if (!prim.edges[static_cast<size_t>(cuts.edges[static_cast<size_t>(k)])].inside(x, y)) {
+      return false;
+    }
+  }
+  return !cuts.depth || std::abs(prim.z.at(x, y)) <= h;
+}
+
 }  // namespace
 
 void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, SurfaceRaster& raster) {
@@ -243,22 +355,28 @@ void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, Surfa
     }
     return;
   }
+  if (j0 > j1) return;
+  const Cuts cuts = cutsWithin(volume, prim, j0, j1);
   std::array<EdgeBound, 4> bounds;
-  for (int k = 0; k < prim.edge_count; ++k) {
-    bounds[static_cast<size_t>(k)] = edgeBound(volume, prim.edges[static_cast<size_t>(k)]);
+  for (int k = 0; k < cuts.edge_count; ++k) {
+    const auto edge = static_cast<size_t>(cuts.edges[static_cast<size_t>(k)]);
+    bounds[static_cast<size_t>(k)] = edgeBound(volume, prim.edges[edge]);
   }
   for (int j = j0; j <= j1; ++j) {
     const double y = volume.centreX(j);
-    // The row's span: every edge and the depth clip bound x from one side or both.
+    // The row's span: the depth clip and every cutting edge bound x from one side or both.
     int lo = rowLo(j), hi = rowHi(j);
-    for (int k = 0; k < prim.edge_count && lo <= hi; ++k) {
-      clipEdge(bounds[static_cast<size_t>(k)], prim.edges[static_cast<size_t>(k)], y, j, r, lo, hi);
-    }
     const double zr = prim.z.c + prim.z.dy * y;
-    if (lo <= hi) clipSpan(volume, prim.z.dx, -h - zr, h - zr, lo, hi);
+    if (cuts.depth && lo <= hi) clipSpan(volume, prim.z.dx, -h - zr, h - zr, lo, hi);
+    for (int k = 0; k < cuts.edge_count && lo <= hi; ++k) {
+      const auto edge = static_cast<size_t>(cuts.edges[static_cast<size_t>(k)]);
+      clipEdge(bounds[static_cast<size_t>(k)], prim.edges[edge], y, j, r, lo, hi);
+    }
     // Trim the conservative ends with the exact test.
-    while (lo <= hi && !insidePlanar(prim, h, volume.centreX(lo), y)) ++lo;
-    while (lo <= hi && !insidePlanar(prim, h, volume.centreX(hi), y)) --hi;
+    if (cuts.depth || cuts.edge_count > 0) {
+      while (lo <= hi && !insideCuts(prim, cuts, h, volume.centreX(lo), y)) ++lo;
+      while (lo <= hi && !insideCuts(prim, cuts, h, volume.centreX(hi), y)) --hi;
+    }
     if (lo > hi) continue;
     raster.cover(j, lo, hi);
     // Inside the span: keep the fragment nearest the other body.
