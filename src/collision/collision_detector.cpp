@@ -182,6 +182,8 @@ struct CollisionDetector::Impl {
   // and whether it reported a gap.
   std::vector<size_t> manifold_first, manifold_new;
   std::vector<uint8_t> manifold_gap;
+  // Per worker slot: the nearest-triangle search's buffers, all grown to the largest.
+  std::vector<collision_detail::NearestScratch> nearest_scratch;
   // This call's worker threads (null: the calling thread only), and the box-box pairs whose
   // narrowphase waits for them (deferBoxPair).
   const ThreadPool* workers = nullptr;
@@ -372,8 +374,8 @@ struct CollisionDetector::Impl {
   void createWorld(size_t shape_count);
   void addBody(BodyId id, const Body& body);
   void collectManifolds();
-  Contact manifoldContact(const btManifoldPoint& pt, const ShapeRecord& r0,
-                          const ShapeRecord& r1) const;
+  Contact manifoldContact(const btManifoldPoint& pt, const ShapeRecord& r0, const ShapeRecord& r1,
+                          collision_detail::NearestScratch& nearest) const;
   // Plane pairs on the pool, each into its own buffer, appended in pair order.
   void collectPlanes();
   void collectPlane(int r0, int r1, std::vector<Contact>& out,
@@ -482,8 +484,10 @@ void CollisionDetector::Impl::collectManifolds() {
   next_point_id += manifold_new[manifolds];
   contacts.resize(base + manifold_first[manifolds]);
   manifold_gap.assign(manifolds, 0);
+  nearest_scratch.resize(workers ? static_cast<size_t>(workers->concurrency()) : 1);
   const auto convert = [&](size_t m) {
     btPersistentManifold* mf = manifold(m);
+    auto& nearest = nearest_scratch[workers ? static_cast<size_t>(workers->slot()) : 0];
     const ShapeRecord& r0 = record(mf->getBody0());
     const ShapeRecord& r1 = record(mf->getBody1());
     uint64_t id = first_id + manifold_new[m];
@@ -492,13 +496,17 @@ void CollisionDetector::Impl::collectManifolds() {
       if (!pt.m_userPersistentData)
         pt.m_userPersistentData = reinterpret_cast<void*>(static_cast<uintptr_t>(id++));
       Contact& c = contacts[base + manifold_first[m] + static_cast<size_t>(p)];
-      c = manifoldContact(pt, r0, r1);
+      c = manifoldContact(pt, r0, r1, nearest);
       c.key = contactKey(
           c, static_cast<uint64_t>(reinterpret_cast<uintptr_t>(pt.m_userPersistentData)));
       manifold_gap[m] |= static_cast<uint8_t>(c.phi < 0);
     }
   };
   forEachOn(workers, manifolds, 32, convert);
+  // Whichever thread converts a mesh's contacts next finds buffers large enough.
+  for (auto& scratch : nearest_scratch) {
+    for (const auto& other : nearest_scratch) scratch.reserveLike(other);
+  }
   // Gaps out unless reported, in order (a pass over every contact only when there are some).
   const bool gaps = std::find(manifold_gap.begin(), manifold_gap.end(), 1) != manifold_gap.end();
   if (gaps && !settings.report_gaps)
@@ -508,7 +516,8 @@ void CollisionDetector::Impl::collectManifolds() {
 }
 
 Contact CollisionDetector::Impl::manifoldContact(const btManifoldPoint& pt, const ShapeRecord& r0,
-                                                 const ShapeRecord& r1) const {
+                                                 const ShapeRecord& r1,
+                                                 collision_detail::NearestScratch& nearest) const {
   // Bullet's body 0 and 1 in A/B order.
   const bool swap = !isA(r0, r1);
   const ShapeRecord& ra = swap ? r1 : r0;
@@ -534,11 +543,11 @@ Contact CollisionDetector::Impl::manifoldContact(const btManifoldPoint& pt, cons
   // Hull contacts of meshes: the mesh triangle nearest to the witness point.
   if (const MeshFeatures* f = madeFeaturesOf(ra)) {
     c.feature_a = f->nearestTriangle(ra.world.applyInverse(c.witness_a),
-                                     ra.world.rotation.conjugate() * -c.normal);
+                                     ra.world.rotation.conjugate() * -c.normal, nearest);
   }
   if (const MeshFeatures* f = madeFeaturesOf(rb)) {
     c.feature_b = f->nearestTriangle(rb.world.applyInverse(c.witness_b),
-                                     rb.world.rotation.conjugate() * c.normal);
+                                     rb.world.rotation.conjugate() * c.normal, nearest);
   }
   // Exact primitive surfaces, the plane's normal, phi and box faces in double.
   finishContact(c, ra.shape, ra.world, rb.shape, rb.world);

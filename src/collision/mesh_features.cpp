@@ -52,12 +52,11 @@ int MeshFeatures::triangleAtVertex(int v, const Vec3& outward) const {
   return best;
 }
 
-int MeshFeatures::nearestTriangle(const Vec3& p, const Vec3& outward) const {
+int MeshFeatures::nearestTriangle(const Vec3& p, const Vec3& outward,
+                                  NearestScratch& scratch) const {
   if (mesh_->triangles.empty()) return -1;
-  // Scratch of this thread (contacts are converted on the world's threads), kept between
-  // calls so that a step allocates nothing.
-  thread_local std::vector<int> candidates;
-  thread_local std::vector<double> dist;
+  std::vector<int>& candidates = scratch.candidates;
+  std::vector<double>& dist = scratch.dist;
   // Any triangle within r of p overlaps the box of half size r: the nearest candidate at a
   // distance <= r is the nearest of all.
   // The last box (reach) holds the whole mesh, so the search always ends with an answer.

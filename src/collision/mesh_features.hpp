@@ -11,6 +11,17 @@
 
 namespace asperity::collision_detail {
 
+// The buffers of nearestTriangle, kept by the caller (one per thread) between searches.
+struct NearestScratch {
+  std::vector<int> candidates;
+  std::vector<double> dist;
+  // At least as large as other's.
+  void reserveLike(const NearestScratch& other) {
+    candidates.reserve(other.candidates.capacity());
+    dist.reserve(other.dist.capacity());
+  }
+};
+
 class MeshFeatures {
  public:
   explicit MeshFeatures(std::shared_ptr<const TriangleMeshData> mesh);
@@ -21,7 +32,7 @@ class MeshFeatures {
   // The triangle nearest to p (mesh frame), found through a box that grows until the nearest
   // candidate lies inside it; among equally near ones (edges, corners) the one whose normal is
   // closest to `outward`. -1 for a mesh without triangles.
-  int nearestTriangle(const Vec3& p, const Vec3& outward) const;
+  int nearestTriangle(const Vec3& p, const Vec3& outward, NearestScratch& scratch) const;
 
  private:
   std::shared_ptr<const TriangleMeshData> mesh_;

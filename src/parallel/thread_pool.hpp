@@ -22,11 +22,13 @@ class ThreadPool {
   // Threads that work runs on (>= 1).
   int concurrency() const;
 
-  // The slot of the thread running the current item, in [0, concurrency()): per-thread
-  // scratch indexed by it is never shared by two items running at once.
-  static int slot() {
+  // The slot of the thread running the current item of forEach, in [0, concurrency()):
+  // per-thread scratch indexed by it is never shared by two items running at once. Items run
+  // without the arena (few of them, or one thread) run on the calling thread alone: slot 0,
+  // whatever other arena that thread works in (a sweep's).
+  int slot() const {
     const int index = tbb::this_task_arena::current_thread_index();
-    return index < 0 ? 0 : index;  // outside the arena: the calling thread alone
+    return index < 0 || index >= concurrency() ? 0 : index;
   }
 
   // body(i) for i in [0, count): items of at least `grain` go to one thread at a time.

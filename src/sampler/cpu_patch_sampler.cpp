@@ -40,9 +40,10 @@ double msBetween(Clock::time_point a, Clock::time_point b) {
 
 }  // namespace
 
-// Scratch kept between calls: rasters, fragment arrays, mesh BVHs, sample directions.
+// Scratch kept between calls: rasters, fragment arrays, sample directions.
 struct CpuPatchSampler::State {
-  patch::MeshCache meshes;
+  explicit State(patch::MeshCache& shared) : meshes(shared) {}
+  patch::MeshCache& meshes;  // the sampler's, shared by every thread's state
   patch::GeometryScratch geometry;
   std::array<patch::SurfaceRaster, 2> raster;  // A, B
   std::vector<uint32_t> in_patch;              // P as Volume::pack(i, j)
@@ -57,7 +58,40 @@ struct CpuPatchSampler::State {
               PatchImages* images);
   void fillImages(const patch::Volume& volume, const FrictionSettings& settings,
                   PatchImages& images);
+  void reserveLike(const State& other);
 };
+
+namespace {
+
+template <class T>
+void reserveAtLeast(std::vector<T>& v, const std::vector<T>& like) {
+  v.reserve(like.capacity());
+}
+
+}  // namespace
+
+void CpuPatchSampler::State::reserveLike(const State& other) {
+  // Every buffer at least as large as other's, and other's directions when this state has
+  // none yet: a thread that has not yet sampled such a patch then allocates nothing when it
+  // first does.
+  if (directions.empty()) directions = other.directions;
+  reserveAtLeast(geometry.triangles, other.geometry.triangles);
+  reserveAtLeast(in_patch, other.in_patch);
+  reserveAtLeast(gx, other.gx);
+  reserveAtLeast(gy, other.gy);
+  for (size_t s = 0; s < 2; ++s) {
+    patch::SurfaceRaster& r = raster[s];
+    const patch::SurfaceRaster& o = other.raster[s];
+    reserveAtLeast(r.key, o.key);
+    reserveAtLeast(r.primitive, o.primitive);
+    reserveAtLeast(r.planars, o.planars);
+    reserveAtLeast(r.curveds, o.curveds);
+    reserveAtLeast(r.win_lo, o.win_lo);
+    reserveAtLeast(r.win_hi, o.win_hi);
+    reserveAtLeast(r.cov_lo, o.cov_lo);
+    reserveAtLeast(r.cov_hi, o.cov_hi);
+  }
+}
 
 void CpuPatchSampler::State::prepare(const FrictionSettings& settings) {
   // Directions for this N; buffers sized for R x R (no allocation once warm).
@@ -168,7 +202,9 @@ void CpuPatchSampler::State::sample(std::span<const Body> bodies, Contact& conta
 }
 
 CpuPatchSampler::CpuPatchSampler()
-    : state_(std::make_unique<State>()), reuse_(std::make_unique<patch::PatchReuse>()) {}
+    : meshes_(std::make_unique<patch::MeshCache>()),
+      state_(std::make_unique<State>(*meshes_)),
+      reuse_(std::make_unique<patch::PatchReuse>()) {}
 
 void CpuPatchSampler::forgetHistory() {
   reuse_ = std::make_unique<patch::PatchReuse>();
@@ -196,23 +232,52 @@ void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::spa
     patch_ms_ = st.patch_ms;
     averaging_ms_ = st.averaging_ms;
   } else {
-    // Each contact is sampled alone (it writes only itself), with the scratch of the thread
-    // that runs it: the coefficients are the same whichever thread that is.
-    while (worker_states_.size() < static_cast<size_t>(pool_->concurrency()))
-      worker_states_.push_back(std::make_unique<State>());
-    for (auto& st : worker_states_) st->patch_ms = st->averaging_ms = 0.0;
-    pool_->forEach(contacts.size(), 4, [&](size_t i) {
-      if (reused_[i]) return;
-      State& st = *worker_states_[static_cast<size_t>(ThreadPool::slot())];
-      st.sample(bodies, contacts[i], settings, nullptr);
-    });
-    patch_ms_ = averaging_ms_ = 0.0;
-    for (const auto& st : worker_states_) {
-      patch_ms_ += st->patch_ms;
-      averaging_ms_ += st->averaging_ms;
-    }
+    sampleOnPool(bodies, contacts, settings);
   }
   reuse_->remember(bodies, contacts, reused_);
+}
+
+void CpuPatchSampler::prepareMeshes(std::span<const Body> bodies,
+                                    std::span<const Contact> contacts) {
+  // Every mesh the contacts may rasterise, built here on the calling thread: the threads then
+  // only look the cache up, and share one BVH per mesh.
+  for (size_t i = 0; i < contacts.size(); ++i) {
+    if (reused_[i]) continue;
+    for (const Side side : {Side::A, Side::B}) {
+      const patch::ShapeRange range = patch::shapesOf(bodies, contacts[i], side);
+      for (int k = range.first; k < range.last; ++k) {
+        const Shape& shape = range.body->shapes[static_cast<size_t>(k)];
+        if (shape.type == ShapeType::TriangleMesh || shape.type == ShapeType::ConvexHull) {
+          meshes_->get(shape);
+        }
+      }
+    }
+  }
+}
+
+void CpuPatchSampler::sampleOnPool(std::span<const Body> bodies, std::span<Contact> contacts,
+                                   const FrictionSettings& settings) {
+  prepareMeshes(bodies, contacts);
+  while (worker_states_.size() < static_cast<size_t>(pool_->concurrency()))
+    worker_states_.push_back(std::make_unique<State>(*meshes_));
+  for (auto& st : worker_states_) st->patch_ms = st->averaging_ms = 0.0;
+  // Each contact is sampled alone (it writes only itself), with the scratch of the thread
+  // that runs it: the coefficients are the same whichever thread that is.
+  pool_->forEach(contacts.size(), 4, [&](size_t i) {
+    if (reused_[i]) return;
+    State& st = *worker_states_[static_cast<size_t>(pool_->slot())];
+    st.sample(bodies, contacts[i], settings, nullptr);
+  });
+  patch_ms_ = averaging_ms_ = 0.0;
+  for (const auto& st : worker_states_) {
+    patch_ms_ += st->patch_ms;
+    averaging_ms_ += st->averaging_ms;
+  }
+  // Which thread samples which contact varies from step to step: every thread's scratch
+  // grows to the largest, so that a warmed-up step allocates on no thread.
+  for (auto& st : worker_states_) {
+    for (const auto& other : worker_states_) st->reserveLike(*other);
+  }
 }
 
 }  // namespace asperity

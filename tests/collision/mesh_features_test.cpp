@@ -20,14 +20,15 @@ TEST(MeshFeatures, VertexContactsTakeTheTriangleFacingOut) {
 
 TEST(MeshFeatures, NearestTriangleOfAFaceAndOfAnEdge) {
   const MeshFeatures f(collision_test::boxMesh(Vec3::Constant(0.1)));
+  NearestScratch scratch;
   // Just above the middle of the +z face (triangles 2-3).
-  const int top = f.nearestTriangle(Vec3(0.03, 0.02, 0.1001), Vec3::UnitZ());
+  const int top = f.nearestTriangle(Vec3(0.03, 0.02, 0.1001), Vec3::UnitZ(), scratch);
   EXPECT_TRUE(top == 2 || top == 3) << top;
   // On the edge between +z and +y: the outward direction decides.
-  const int side = f.nearestTriangle(Vec3(0.0, 0.1, 0.1), Vec3::UnitY());
+  const int side = f.nearestTriangle(Vec3(0.0, 0.1, 0.1), Vec3::UnitY(), scratch);
   EXPECT_TRUE(side == 6 || side == 7) << side;
   // Far away: still the nearest face.
-  const int far = f.nearestTriangle(Vec3(5, 0, 0), Vec3::UnitX());
+  const int far = f.nearestTriangle(Vec3(5, 0, 0), Vec3::UnitX(), scratch);
   EXPECT_TRUE(far == 10 || far == 11) << far;
 }
 

@@ -23,7 +23,7 @@ TEST(ThreadPool, RunsEveryItemOnceInItsSlots) {
     std::atomic<bool> slots_ok{true};
     pool.forEach(seen.size(), 7, [&](size_t i) {
       seen[i]++;
-      const int slot = ThreadPool::slot();
+      const int slot = pool.slot();
       if (slot < 0 || slot >= pool.concurrency()) slots_ok = false;
     });
     for (const auto& s : seen) EXPECT_EQ(s.load(), 1);
@@ -31,6 +31,23 @@ TEST(ThreadPool, RunsEveryItemOnceInItsSlots) {
     EXPECT_EQ(pool.concurrency() == 1, threads == 1);
   }
   EXPECT_THROW(ThreadPool(-1), Error);
+}
+
+// A pool used from a thread of a larger arena (a world stepped in a sweep): items that run
+// without the pool's arena still get a slot of the pool.
+TEST(ThreadPool, SlotsStayInsideThePoolWithinAnotherArena) {
+  const ThreadPool pool(2);
+  tbb::task_arena outer(8);
+  std::atomic<bool> slots_ok{true};
+  outer.execute([&] {
+    tbb::parallel_for(0, 64, [&](int) {
+      pool.forEach(3, 7, [&](size_t) {  // few items: run inline
+        const int slot = pool.slot();
+        if (slot < 0 || slot >= pool.concurrency()) slots_ok = false;
+      });
+    });
+  });
+  EXPECT_TRUE(slots_ok);
 }
 
 // The state after each step is the same bits on 1, 2, 4 and 8 threads (SPEC 9).

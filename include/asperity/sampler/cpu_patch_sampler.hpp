@@ -8,7 +8,8 @@
 //
 // Surfaces: a contact's shape_a / shape_b (all shapes of the body when -1). k_A, k_B are the
 // gains of those shapes' surfaces (of the first shape when -1); gain masks multiply each
-// fragment. Single-threaded; scratch buffers and mesh BVHs are kept between calls.
+// fragment. Contacts are sampled on the world's threads; scratch buffers (one set per thread)
+// and mesh BVHs (one for all threads) are kept between calls.
 // Registered as "cpu" in the scene's friction provider registry.
 #pragma once
 
@@ -21,8 +22,9 @@
 namespace asperity {
 
 namespace patch {
+class MeshCache;
 class PatchReuse;
-}
+}  // namespace patch
 
 class CpuPatchSampler : public FrictionProvider {
  public:
@@ -48,6 +50,11 @@ class CpuPatchSampler : public FrictionProvider {
 
  private:
   struct State;
+  void prepareMeshes(std::span<const Body> bodies, std::span<const Contact> contacts);
+  void sampleOnPool(std::span<const Body> bodies, std::span<Contact> contacts,
+                    const FrictionSettings& settings);
+
+  std::unique_ptr<patch::MeshCache> meshes_;           // shape meshes and BVHs, shared
   std::unique_ptr<State> state_;                       // the calling thread's scratch
   std::vector<std::unique_ptr<State>> worker_states_;  // one per pool thread
   std::unique_ptr<patch::PatchReuse> reuse_;           // earlier samples (patch coherence)
