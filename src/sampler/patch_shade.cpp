@@ -68,14 +68,22 @@ Fragment shadeFragment(const Volume& volume, const SurfaceRaster& raster, int pi
 
 namespace {
 
-// Whether the batched path applies: a flat-framed planar primitive with a power-of-two normal
-// map and no mask (boxes, planes, flat mesh triangles with the usual textures).
+// Whether the batched path applies: a flat-framed planar primitive with a normal map and no
+// mask (boxes, planes, flat mesh triangles with the usual textures).
 bool batchable(const SurfaceRaster& raster, int32_t id) {
   if (id < 0) return false;
   const Planar& p = raster.planars[static_cast<size_t>(id)];
   if (p.smooth || p.material.map == nullptr || p.material.mask != nullptr) return false;
-  const int w = p.material.map->width(), h = p.material.map->height();
-  return w > 0 && h > 0 && (w & (w - 1)) == 0 && (h & (h - 1)) == 0;
+  return p.material.map->width() > 0 && p.material.map->height() > 0;
+}
+
+// Whether every fragment of the primitive has the same meso normal: a planar primitive with
+// one frame and neither a normal map nor a mask (a plain ground plane or box face).
+bool flat(const SurfaceRaster& raster, int32_t id) {
+  if (id < 0) return false;
+  const Planar& p = raster.planars[static_cast<size_t>(id)];
+  return !p.smooth && (p.material.map == nullptr || p.material.map->empty()) &&
+         p.material.mask == nullptr;
 }
 
 int log2i(int v) {
@@ -102,8 +110,9 @@ struct ChunkNormals {
 struct RunSetup {
   const float* tex = nullptr;
   int w = 0, h = 0, lw = 0;
-  int floats = 0;  // 3 w h
-  float fw = 0.0f, fh = 0.0f;
+  bool pow2 = false;  // both sizes powers of two: wrap by masks, rows by shifts
+  int floats = 0;     // 3 w h
+  float fw = 0.0f, fh = 0.0f, inv_w = 0.0f, inv_h = 0.0f;
   float base = 0.0f, step = 0.0f;  // pixel centre coordinate = base + step * index
 };
 
@@ -112,16 +121,19 @@ RunSetup setupRun(const Volume& volume, const Planar& p) {
   RunSetup s;
   s.tex = map.at(0, 0).data();
   s.w = map.width(), s.h = map.height(), s.lw = log2i(s.w);
+  s.pow2 = (s.w & (s.w - 1)) == 0 && (s.h & (s.h - 1)) == 0;
   s.floats = 3 * s.w * s.h;
   s.fw = static_cast<float>(s.w), s.fh = static_cast<float>(s.h);
+  s.inv_w = 1.0f / s.fw, s.inv_h = 1.0f / s.fh;
   s.base = static_cast<float>(-0.5 * volume.width + 0.5 * volume.pixel);
   s.step = static_cast<float>(volume.pixel);
   return s;
 }
 
-// uv at each pixel centre (affine over the primitive), the bracketing texels (repeat, power-of-
-// two sizes) and the weights: straight-line code the compiler vectorises. Returns the largest
-// offset.
+// uv at each pixel centre (affine over the primitive), the bracketing texels (repeat) and the
+// weights: straight-line code the compiler vectorises (masks and shifts for power-of-two
+// maps). Returns the largest offset.
+template <bool kPow2>
 int chunkTexels(const RunSetup& s, const Planar& p, const uint32_t* pixels, size_t n,
                 ChunkTexels& t) {
   int top = 0;
@@ -135,12 +147,20 @@ int chunkTexels(const RunSetup& s, const Planar& p, const uint32_t* pixels, size
     const int bu = floorInt(xu), bv = floorInt(xv);
     t.wu[c] = xu - static_cast<float>(bu);
     t.wv[c] = xv - static_cast<float>(bv);
-    const int iu = bu & (s.w - 1), iv = bv & (s.h - 1);
-    const int iu1 = (iu + 1) & (s.w - 1), iv1 = (iv + 1) & (s.h - 1);
-    t.o00[c] = 3 * ((iv << s.lw) + iu);
-    t.o01[c] = 3 * ((iv << s.lw) + iu1);
-    t.o10[c] = 3 * ((iv1 << s.lw) + iu);
-    t.o11[c] = 3 * ((iv1 << s.lw) + iu1);
+    int iu, iv, iu1, iv1, row, row1;
+    if constexpr (kPow2) {
+      iu = bu & (s.w - 1), iv = bv & (s.h - 1);
+      iu1 = (iu + 1) & (s.w - 1), iv1 = (iv + 1) & (s.h - 1);
+      row = iv << s.lw, row1 = iv1 << s.lw;
+    } else {
+      iu = wrapTexelBy(bu, s.w, s.inv_w), iv = wrapTexelBy(bv, s.h, s.inv_h);
+      iu1 = iu + 1 == s.w ? 0 : iu + 1, iv1 = iv + 1 == s.h ? 0 : iv + 1;
+      row = iv * s.w, row1 = iv1 * s.w;
+    }
+    t.o00[c] = 3 * (row + iu);
+    t.o01[c] = 3 * (row + iu1);
+    t.o10[c] = 3 * (row1 + iu);
+    t.o11[c] = 3 * (row1 + iu1);
     top = std::max(top, std::max(std::max(t.o00[c], t.o01[c]), std::max(t.o10[c], t.o11[c])));
   }
   return top;
@@ -235,7 +255,9 @@ void shadeRun(const Volume& volume, const Planar& p, Side side, float mu_max,
   for (size_t c0 = k0; c0 < k1; c0 += kChunk) {
     const size_t n = std::min(kChunk, k1 - c0);
     // Four floats from each texel unless the last texel of the map is among them.
-    if (chunkTexels(setup, p, pixels.data() + c0, n, texels) + 4 <= setup.floats) {
+    const int top = setup.pow2 ? chunkTexels<true>(setup, p, pixels.data() + c0, n, texels)
+                               : chunkTexels<false>(setup, p, pixels.data() + c0, n, texels);
+    if (top + 4 <= setup.floats) {
       chunkNormals4(setup.tex, p.frame, texels, n, normals);
     } else {
       chunkNormals(setup.tex, p.frame, texels, n, normals);
@@ -260,12 +282,16 @@ void shadePloughing(const Volume& volume, const SurfaceRaster& raster,
     shadeRun(volume, raster.planars[0], raster.side, mu_max, pixels, 0, pixels.size(), gx, gy);
     return;
   }
-  // Runs of one batchable primitive in bulk, the rest one by one.
+  // Runs of one batchable primitive in bulk, runs of a flat one from their first fragment,
+  // the rest one by one.
   for (size_t k = 0; k < pixels.size();) {
     const int32_t id = primitiveAt(k);
-    if (batchable(raster, id)) {
-      size_t end = k + 1;
+    size_t end = k + 1;
+    const bool batch = batchable(raster, id), same = !batch && flat(raster, id);
+    if (batch || same) {
       while (end < pixels.size() && primitiveAt(end) == id) ++end;
+    }
+    if (batch) {
       shadeRun(volume, raster.planars[static_cast<size_t>(id)], raster.side, mu_max, pixels, k, end,
                gx, gy);
       k = end;
@@ -276,9 +302,9 @@ void shadePloughing(const Volume& volume, const SurfaceRaster& raster,
     const int i = static_cast<int>(pixels[k] & 0xffffu), j = static_cast<int>(pixels[k] >> 16);
     const Fragment f = shadeFragment(volume, raster, j * r + i);
     const Vec2f g = ploughingVector(f.m, raster.side, mu_max);
-    gx[k] = f.gain * g.x();
-    gy[k] = f.gain * g.y();
-    ++k;
+    std::fill(gx + k, gx + end, f.gain * g.x());
+    std::fill(gy + k, gy + end, f.gain * g.y());
+    k = end;
   }
 }
 

@@ -35,6 +35,15 @@ inline int wrapTexel(int index, int size) {
   return m < 0 ? m + size : m;
 }
 
+// wrapTexel without a division, given 1 / size, for |index| < 2^24: the float quotient is off
+// by at most one, which the two corrections undo (branch-free, so loops vectorise).
+inline int wrapTexelBy(int index, int size, float inv_size) {
+  int m = index - size * floorInt(static_cast<float>(index) * inv_size);
+  m += m < 0 ? size : 0;
+  m -= m >= size ? size : 0;
+  return m;
+}
+
 inline TexelBracket bracketRepeat(float t, int size) {
   // Texel centres at (i + 0.5) / size (t is kept small by the callers).
   const float x = t * static_cast<float>(size) - 0.5f;
