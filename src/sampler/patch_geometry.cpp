@@ -51,9 +51,11 @@ void pushPolygon(const Volume& volume, PolygonVertex* v, int count, bool smooth,
                  const Material& material, SurfaceRaster& raster) {
   if (raster.side == Side::A) std::reverse(v, v + count);
   shiftUv(v, count);
-  Planar prim;
-  if (!makePlanar(volume, v, count, smooth, material, prim)) return;
-  raster.planars.push_back(prim);
+  raster.planars.emplace_back();
+  if (!makePlanar(volume, v, count, smooth, material, raster.planars.back())) {
+    raster.planars.pop_back();
+    return;
+  }
   const auto id = static_cast<int32_t>(raster.planars.size() - 1);
   rasterisePlanar(volume, raster.planars.back(), id, raster);
 }

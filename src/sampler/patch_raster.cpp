@@ -286,35 +286,40 @@ struct Cuts {
   bool depth = false;
 };
 
-// Whether the affine c + dx x + dy y stays above `floor` over the box with corners xs x ys,
-// by a margin far above the rounding of evaluating it at a pixel centre (an affine function is
-// extreme at the corners).
-bool aboveOverBox(double c, double dx, double dy, double floor, const double (&xs)[2],
-                  const double (&ys)[2]) {
-  const double scale = std::abs(c) + std::abs(dx) * std::max(std::abs(xs[0]), std::abs(xs[1])) +
-                       std::abs(dy) * std::max(std::abs(ys[0]), std::abs(ys[1]));
-  const double margin = 1e-9 * scale + std::abs(floor) * 1e-9;
-  for (double x : xs) {
-    for (double y : ys) {
-      if (!(c + dx * x + dy * y > floor + margin)) return false;
-    }
-  }
-  return true;
+// The pixel-centre box of a primitive: x in [x0, x1], y in [y0, y1], and the largest |x|, |y|.
+struct CentreBox {
+  double x0, x1, y0, y1, reach_x, reach_y;
+};
+
+// Whether the affine c + dx x + dy y stays above `floor` over the box, by a margin far above
+// the rounding of evaluating it at a pixel centre: an affine function is least at the corner
+// its slopes point away from.
+bool aboveOverBox(double c, double dx, double dy, double floor, const CentreBox& box) {
+  const double margin = 1e-9 * (std::abs(c) + std::abs(dx) * box.reach_x +
+                                std::abs(dy) * box.reach_y + std::abs(floor));
+  const double x = dx >= 0.0 ? box.x0 : box.x1, y = dy >= 0.0 ? box.y0 : box.y1;
+  return c + dx * x + dy * y > floor + margin;
 }
 
 Cuts cutsWithin(const Volume& volume, const Planar& prim, int j0, int j1) {
-  const double xs[2] = {volume.centreX(prim.i0), volume.centreX(prim.i1)};
-  const double ys[2] = {volume.centreX(j0), volume.centreX(j1)};
+  CentreBox box{volume.centreX(prim.i0),
+                volume.centreX(prim.i1),
+                volume.centreX(j0),
+                volume.centreX(j1),
+                0.0,
+                0.0};
+  box.reach_x = std::max(std::abs(box.x0), std::abs(box.x1));
+  box.reach_y = std::max(std::abs(box.y0), std::abs(box.y1));
   Cuts cuts;
   for (int k = 0; k < prim.edge_count; ++k) {
     const Edge& e = prim.edges[static_cast<size_t>(k)];
-    if (!aboveOverBox(e.c, e.a, e.b, 0.0, xs, ys))
+    if (!aboveOverBox(e.c, e.a, e.b, 0.0, box))
       cuts.edges[static_cast<size_t>(cuts.edge_count++)] = k;
   }
   // |z| <= h: z > -h and -z > -h.
   const double h = volume.half_depth;
-  cuts.depth = !aboveOverBox(prim.z.c, prim.z.dx, prim.z.dy, -h, xs, ys) ||
-               !aboveOverBox(-prim.z.c, -prim.z.dx, -prim.z.dy, -h, xs, ys);
+  cuts.depth = !aboveOverBox(prim.z.c, prim.z.dx, prim.z.dy, -h, box) ||
+               !aboveOverBox(-prim.z.c, -prim.z.dx, -prim.z.dy, -h, box);
   return cuts;
 }
 
