@@ -61,35 +61,26 @@ struct CpuPatchSampler::State {
   void reserveLike(const State& other);
 };
 
-namespace {
-
-template <class T>
-void reserveAtLeast(std::vector<T>& v, const std::vector<T>& like) {
-  v.reserve(like.capacity());
-}
-
-}  // namespace
-
 void CpuPatchSampler::State::reserveLike(const State& other) {
   // Every buffer at least as large as other's, and other's directions when this state has
   // none yet: a thread that has not yet sampled such a patch then allocates nothing when it
   // first does.
   if (directions.empty()) directions = other.directions;
-  reserveAtLeast(geometry.triangles, other.geometry.triangles);
-  reserveAtLeast(in_patch, other.in_patch);
-  reserveAtLeast(gx, other.gx);
-  reserveAtLeast(gy, other.gy);
+  geometry.triangles.reserve(other.geometry.triangles.capacity());
+  in_patch.reserve(other.in_patch.capacity());
+  gx.reserve(other.gx.capacity());
+  gy.reserve(other.gy.capacity());
   for (size_t s = 0; s < 2; ++s) {
     patch::SurfaceRaster& r = raster[s];
     const patch::SurfaceRaster& o = other.raster[s];
-    reserveAtLeast(r.key, o.key);
-    reserveAtLeast(r.primitive, o.primitive);
-    reserveAtLeast(r.planars, o.planars);
-    reserveAtLeast(r.curveds, o.curveds);
-    reserveAtLeast(r.win_lo, o.win_lo);
-    reserveAtLeast(r.win_hi, o.win_hi);
-    reserveAtLeast(r.cov_lo, o.cov_lo);
-    reserveAtLeast(r.cov_hi, o.cov_hi);
+    r.key.reserve(o.key.capacity());
+    r.primitive.reserve(o.primitive.capacity());
+    r.planars.reserve(o.planars.capacity());
+    r.curveds.reserve(o.curveds.capacity());
+    r.win_lo.reserve(o.win_lo.capacity());
+    r.win_hi.reserve(o.win_hi.capacity());
+    r.cov_lo.reserve(o.cov_lo.capacity());
+    r.cov_hi.reserve(o.cov_hi.capacity());
   }
 }
 

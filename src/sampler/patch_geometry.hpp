@@ -31,6 +31,7 @@ inline constexpr int kCurvedSegments = 1024;
 inline constexpr int kCurvedRings = 128;
 
 // Shape meshes by mesh data and mapping; also tessellated spheres, capsules and cylinders.
+// get() builds a missing entry: threads may share a cache only for shapes already in it.
 class MeshCache {
  public:
   const CachedMesh& get(const Shape& shape);
