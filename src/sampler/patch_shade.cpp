@@ -287,8 +287,8 @@ void shadePloughing(const Volume& volume, const SurfaceRaster& raster,
   for (size_t k = 0; k < pixels.size();) {
     const int32_t id = primitiveAt(k);
     size_t end = k + 1;
-    const bool batch = batchable(raster, id), same = !batch && flat(raster, id);
-    if (batch || same) {
+    const bool batch = batchable(raster, id), one_vector = !batch && flat(raster, id);
+    if (batch || one_vector) {
       while (end < pixels.size() && primitiveAt(end) == id) ++end;
     }
     if (batch) {
