@@ -26,6 +26,7 @@
 #include "asperity/dynamics/joint.hpp"
 #include "asperity/friction/limit_surface.hpp"
 #include "asperity/math/types.hpp"
+#include "solver/lanes.hpp"
 
 namespace asperity {
 
@@ -168,10 +169,22 @@ class ContactSolver {
   void buildIslands();
   // body(k) for every island k, on the pool when there is enough work.
   void forEachIsland(const std::function<void(size_t)>& body) const;
+  // The pool for `tasks` islands or pairs of islands, or null when one thread does better.
+  const ThreadPool* islandPool(size_t tasks) const;
   int findRoot(int body);
-  double sweepIsland(const Island& island, int iterations);
+  // `iterations` sweeps of two islands side by side; delta_* get each one's last squared
+  // impulse change.
+  void sweepIslands(const Island& x, const Island& y, int iterations, double& delta_x,
+                    double& delta_y);
   template <class Limit>
-  double sweepContacts(std::span<const Limit> limits, std::span<const int> rows);
+  void sweepContacts(std::span<const Limit> limits, std::span<const int> x, std::span<const int> y,
+                     double& delta_x, double& delta_y);
+  // One contact row's normal and tangential update (and its position row), and the same for
+  // two rows of different islands in the two lanes of a register.
+  template <class Limit>
+  void sweepRow(std::span<const Limit> limits, size_t i, double& delta2);
+  template <class Limit>
+  void sweepRowPair(std::span<const Limit> limits, size_t ix, size_t iy, lanes::Lanes& delta2);
   void solvePositionRow(ContactRow& r, size_t a, size_t b);
   double sweepJoints(const Island& island);
   void applyImpulse(int a, int b, const Vec3& p, const Vec3& ia, const Vec3& ib);
