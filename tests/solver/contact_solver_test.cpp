@@ -320,6 +320,99 @@ TEST(ContactSolver, RowsThenLimitsGiveTheBitsOfSetContacts) {
   }
 }
 
+// Islands are swept two at a time, one in each lane of a vector register, and an odd one
+// alone: each must get the same bits whatever island sits beside it and in which lane. Four
+// columns of unequal heights (the longer of a pair finishes alone), sliding and sticking rows,
+// penetrations that need position rows, separated rows, warm starting, every limit surface;
+// solved as they are, and again behind one more island, which shifts every column to another
+// partner or lane (the last one from a lane to sweeping alone).
+TEST(ContactSolver, IslandsSweptSideBySideGiveTheBitsOfEachAlone) {
+  const int heights[] = {5, 2, 4, 3};
+  // Turned off the axes, so that every product rounds (a lane summing in another order fails).
+  const Mat3 turn = Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  auto turned = [&](Column col) {
+    for (Body& body : col.bodies) {
+      body.pose.position = turn * body.pose.position;
+      body.linear_velocity = turn * body.linear_velocity;
+      body.angular_velocity = turn * body.angular_velocity;
+    }
+    for (Contact& c : col.contacts) {
+      c.point = c.witness_a = c.witness_b = turn * c.point;
+      c.normal = turn * c.normal;
+      c.t = turn * c.t;
+      c.b = turn * c.b;
+    }
+    return col;
+  };
+  auto scene = [&](bool extra_island) {
+    Column all{ground(), {}};
+    if (extra_island) {
+      all.bodies.push_back(particle(Vec3(-3, 0, 0.1), 2.0, Vec3(0.3, 0, -kG * kDt)));
+      Contact c = groundContact(1, Vec3(-3, 0, 0), box(0.4f, 0.4f, 0.4f, 0.4f));
+      c.phi = 0.002;
+      all.contacts.push_back(c);
+    }
+    for (int j = 0; j < 4; ++j) {
+      Column col = column(heights[j]);
+      const auto first = static_cast<BodyId>(all.bodies.size());
+      for (size_t i = 1; i < col.bodies.size(); ++i) {
+        Body body = col.bodies[i];
+        body.pose.position.x() += 3.0 * j;
+        body.linear_velocity += Vec3(0.05 * (j + 1) * static_cast<double>(i), -0.02 * j, 0.0);
+        body.angular_velocity = Vec3(0.1, -0.2 * j, 0.3 * static_cast<double>(i));
+        all.bodies.push_back(body);
+      }
+      for (size_t k = 0; k < col.contacts.size(); ++k) {
+        Contact c = col.contacts[k];
+        c.point.x() += 3.0 * j;
+        c.body_a += first - 1;
+        if (c.body_b != 0) c.body_b += first - 1;
+        const float m = 0.2f + 0.07f * static_cast<float>((k + static_cast<size_t>(j)) % 5);
+        c.mu = box(m, 0.8f * m, 1.3f * m, 0.9f * m);
+        c.phi = k % 4 == 3 ? -0.002 : 0.001 * static_cast<double>(k % 3);
+        all.contacts.push_back(c);
+      }
+    }
+    return turned(all);
+  };
+  for (const LimitSurfaceKind kind :
+       {LimitSurfaceKind::Coulomb, LimitSurfaceKind::Box, LimitSurfaceKind::Polygon}) {
+    SolverSettings s = settings(kind);
+    s.warm_starting = true;
+    auto solve = [&](Column col) {
+      ContactSolver solver;
+      for (int step = 0; step < 2; ++step) {
+        solver.begin(col.bodies, s);
+        solver.setContacts(col.contacts, true);
+        solver.iterate(7);
+        solver.finish(col.bodies, col.contacts);
+      }
+      std::vector<Vec3> pseudo;
+      for (BodyId b = 0; b < col.bodies.size(); ++b) {
+        pseudo.push_back(solver.pseudoLinear(b));
+        pseudo.push_back(solver.pseudoAngular(b));
+      }
+      return std::make_pair(col, pseudo);
+    };
+    const auto [as_is, as_is_pseudo] = solve(scene(false));
+    const auto [shifted, shifted_pseudo] = solve(scene(true));
+    for (size_t b = 1; b < as_is.bodies.size(); ++b) {
+      EXPECT_EQ(as_is.bodies[b].linear_velocity, shifted.bodies[b + 1].linear_velocity) << b;
+      EXPECT_EQ(as_is.bodies[b].angular_velocity, shifted.bodies[b + 1].angular_velocity) << b;
+      EXPECT_EQ(as_is_pseudo[2 * b], shifted_pseudo[2 * b + 2]) << "body " << b;
+      EXPECT_EQ(as_is_pseudo[2 * b + 1], shifted_pseudo[2 * b + 3]) << "body " << b;
+    }
+    for (size_t k = 0; k < as_is.contacts.size(); ++k) {
+      EXPECT_EQ(as_is.contacts[k].lambda_n, shifted.contacts[k + 1].lambda_n) << "contact " << k;
+      EXPECT_EQ(as_is.contacts[k].lambda_t, shifted.contacts[k + 1].lambda_t) << "contact " << k;
+      EXPECT_EQ(as_is.contacts[k].lambda_b, shifted.contacts[k + 1].lambda_b) << "contact " << k;
+    }
+    // Not a trivial agreement: the columns move and push.
+    EXPECT_GT(as_is.contacts[0].lambda_n, 0.0);
+    EXPECT_NE(as_is_pseudo[2], Vec3::Zero());
+  }
+}
+
 TEST(ContactSolver, LimitsForOtherContactsThanTheRowsAreAnError) {
   Column col = column(2);
   ContactSolver solver;
