@@ -16,8 +16,10 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
 #include <tuple>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -97,20 +99,43 @@ class ContactSolver {
   double lastDelta() const { return last_delta_; }
   int contactRowCount() const { return static_cast<int>(rows_.size()); }
 
-  // One contact: Jacobians, I^-1 J^T, effective masses and accumulated impulses.
+  // One contact: Jacobians, I^-1 J^T, effective masses and accumulated impulses. Every field
+  // is written by prepareContact, so a new row starts uninitialised (see RowAllocator).
   struct ContactRow {
-    int a = 0, b = 0;
+    int a, b;
     Vec3 n, t;                                // normal and tangent t (world); b = n x t
     Vec3 ra, rb;                              // contact point from each centre of mass
     Vec3 ia_n, ib_n, ia_t, ib_t, ia_b, ib_b;  // I^-1 (r x direction)
-    double mass_n = 0.0;                      // 1 / K_nn
-    Vec3 inv_k;                // inverse of the tangential 2x2 block K: (K^-1_tt, K^-1_tb, K^-1_bb)
-    double inv_k_slide = 0.0;  // 1 / largest eigenvalue of that block
-    double k_tn = 0.0, k_bn = 0.0;  // K_tn, K_bn: tangential response to lambda_n
-    double target_n = 0.0;          // normal velocity target (negative for separated contacts)
-    double target_p = 0.0;          // pseudo-velocity target of the split impulse
-    double lambda_n = 0.0, lambda_t = 0.0, lambda_b = 0.0, lambda_p = 0.0;
+    double mass_n;                            // 1 / K_nn
+    Vec3 inv_k;          // inverse of the tangential 2x2 block K: (K^-1_tt, K^-1_tb, K^-1_bb)
+    double inv_k_slide;  // 1 / largest eigenvalue of that block
+    double k_tn, k_bn;   // K_tn, K_bn: tangential response to lambda_n
+    double target_n;     // normal velocity target (negative for separated contacts)
+    double target_p;     // pseudo-velocity target of the split impulse
+    double lambda_n, lambda_t, lambda_b, lambda_p;
   };
+  // Grows a vector by default-initialised elements (none of a row's bytes written), where
+  // std::allocator would zero them: the rows of a step are made anew, a megabyte for a pile of
+  // a thousand cubes, and that pass would run on one thread.
+  template <class T>
+  struct RowAllocator : std::allocator<T> {
+    template <class U>
+    struct rebind {
+      using other = RowAllocator<U>;
+    };
+    RowAllocator() = default;
+    template <class U>
+    RowAllocator(const RowAllocator<U>& /*other*/) noexcept {}
+    template <class U>
+    void construct(U* p) noexcept {
+      ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+      ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+  };
+  using Rows = std::vector<ContactRow, RowAllocator<ContactRow>>;
   // A point-to-point (ball) block of three rows.
   struct BallRow {
     int a = 0, b = 0, joint = 0;
@@ -198,13 +223,13 @@ class ContactSolver {
   std::vector<Vec3> position_;
   std::vector<Quat> rotation_;
   // Rows.
-  std::vector<ContactRow> rows_;
-  std::vector<int> order_;          // sweep order of the contact rows (see scheduleRows)
-  std::vector<int> pending_;        // scratch of scheduleRows
-  std::vector<int> slot_;           // contact i's row in rows_ (rows_ is stored in sweep order)
-  std::vector<ContactRow> sorted_;  // scratch of storeInSweepOrder
-  LimitVectors limits_;             // one per contact row, of the settings' limit surface
-  LimitVectors sorted_limits_;      // spare of the same kind for the copy into sweep order
+  Rows rows_;
+  std::vector<int> order_;      // sweep order of the contact rows (see scheduleRows)
+  std::vector<int> pending_;    // scratch of scheduleRows
+  std::vector<int> slot_;       // contact i's row in rows_ (rows_ is stored in sweep order)
+  Rows sorted_;                 // scratch of storeInSweepOrder
+  LimitVectors limits_;         // one per contact row, of the settings' limit surface
+  LimitVectors sorted_limits_;  // spare of the same kind for the copy into sweep order
   bool friction_ = true;
   bool warm_started_ = false;
   std::vector<BallRow> balls_;
