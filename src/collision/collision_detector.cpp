@@ -188,6 +188,7 @@ struct CollisionDetector::Impl {
   // narrowphase waits for them (deferBoxPair).
   const ThreadPool* workers = nullptr;
   std::vector<btBroadphasePair*> deferred;
+  btManifoldArray pair_manifolds;  // idleBoxPair's scratch, on the calling thread
   uint64_t next_point_id = 1;
 
   ~Impl() { release(); }
@@ -248,6 +249,7 @@ struct CollisionDetector::Impl {
       btCollisionDispatcher::defaultNearCallback(pair, d, gjk_axis);
       return;
     }
+    if (self->isBoxPair(r0, r1) && self->idleBoxPair(pair, r0, r1)) return;
     if (self->workers && self->isBoxPair(r0, r1)) {
       self->deferBoxPair(pair, d);
       return;
@@ -258,6 +260,29 @@ struct CollisionDetector::Impl {
   bool isBoxPair(int r0, int r1) const {
     return records[static_cast<size_t>(r0)].shape.type == ShapeType::Box &&
            records[static_cast<size_t>(r1)].shape.type == ShapeType::Box;
+  }
+
+  // A box pair met before (its algorithm and manifold made in an earlier step, so manifolds
+  // keep their order) whose manifold is empty and whose boxes are apart along a face normal by
+  // more than rounding: the narrowphase would add no point and have none to refresh, so it
+  // is skipped. In a pile most pairs are such neighbours: the broadphase's boxes, grown by
+  // Bullet's margins, overlap theirs.
+  bool idleBoxPair(btBroadphasePair& pair, int r0, int r1) {
+    if (!pair.m_algorithm) return false;
+    const ShapeRecord& a = records[static_cast<size_t>(r0)];
+    const ShapeRecord& b = records[static_cast<size_t>(r1)];
+    const double size = std::max(a.shape.half_extents.maxCoeff(), b.shape.half_extents.maxCoeff());
+    const double gap = 1e-3 * size + settings.contact_margin;
+    if (!collision_detail::boxesApart(a.shape.half_extents, a.axes, a.world.position,
+                                      b.shape.half_extents, b.axes, b.world.position, gap)) {
+      return false;
+    }
+    pair_manifolds.resizeNoInitialize(0);
+    pair.m_algorithm->getAllContactManifolds(pair_manifolds);
+    for (int k = 0; k < pair_manifolds.size(); ++k) {
+      if (pair_manifolds[k]->getNumContacts() > 0) return false;
+    }
+    return true;
   }
 
   // Bullet's defaultNearCallback up to the narrowphase: the pair's algorithm (and with it, for
@@ -430,6 +455,7 @@ void CollisionDetector::Impl::addBody(BodyId id, const Body& body) {
       }
     }
     rec.world = body.pose * rec.shape.local;
+    if (rec.shape.type == ShapeType::Box) rec.axes = rec.world.rotation.toRotationMatrix();
     rec.object = std::make_unique<btCollisionObject>();
     rec.object->setCollisionShape(rec.bullet.shape.get());
     rec.object->setWorldTransform(toBt(rec.world, scale));
@@ -769,6 +795,7 @@ void CollisionDetector::Impl::collect(std::span<const Body> bodies, const Thread
   for (ShapeRecord& rec : records) {
     const Body& body = bodies[rec.body];
     rec.world = body.pose * rec.shape.local;
+    if (rec.shape.type == ShapeType::Box) rec.axes = rec.world.rotation.toRotationMatrix();
     rec.object->setWorldTransform(toBt(rec.world, scale));
     rec.velocity = body.pointVelocity(rec.world.position);
     rec.angular_speed = body.angular_velocity.norm();

@@ -92,4 +92,19 @@ void finishContact(Contact& c, const Shape& shape_a, const Transform& world_a, c
   if (shape_b.type == ShapeType::Box) c.feature_b = boxFace(world_b, c.normal);
 }
 
+bool boxesApart(const Vec3& half_a, const Mat3& axes_a, const Vec3& centre_a, const Vec3& half_b,
+                const Mat3& axes_b, const Vec3& centre_b, double gap) {
+  // Centre distance along a face normal against the two boxes' extents along it, one axis at
+  // a time: neighbours in a pile part along the first or second.
+  const Vec3 d = centre_b - centre_a;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 a = axes_a.col(i), b = axes_b.col(i);
+    const Vec3 a_on_b = (axes_b.transpose() * a).cwiseAbs();  // |a_i . b_j|
+    if (std::abs(a.dot(d)) - half_a[i] - a_on_b.dot(half_b) > gap) return true;
+    const Vec3 b_on_a = (axes_a.transpose() * b).cwiseAbs();  // |b_i . a_j|
+    if (std::abs(b.dot(d)) - half_b[i] - b_on_a.dot(half_a) > gap) return true;
+  }
+  return false;
+}
+
 }  // namespace asperity::collision_detail

@@ -16,6 +16,12 @@ Vec3 snapToSurface(const Shape& shape, const Transform& shape_world, const Vec3&
 // Face index of a box whose outward normal is `outward` (world): 2 * axis + (negative ? 1 : 0).
 int boxFace(const Transform& shape_world, const Vec3& outward);
 
+// Whether two boxes (half extents, world axes as matrix columns, centres) are apart by more
+// than `gap` along one of their six face normals: a separating axis, so that no narrowphase
+// finds a contact.
+bool boxesApart(const Vec3& half_a, const Mat3& axes_a, const Vec3& centre_a, const Vec3& half_b,
+                const Mat3& axes_b, const Vec3& centre_b, double gap);
+
 // Finishes a contact whose witness points and normal (B to A) are set: snaps the witness
 // points, uses a plane's exact normal, recomputes point and phi (SPEC 1), sets box faces.
 void finishContact(Contact& c, const Shape& shape_a, const Transform& world_a, const Shape& shape_b,

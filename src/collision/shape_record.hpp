@@ -21,6 +21,7 @@ struct ShapeRecord {
   bool closed_mesh = false;       // a TriangleMesh bounding a volume (signed distance path)
   std::vector<Vec4> hull_planes;  // outward unit normal and offset per face (hull shapes)
   Transform world;                // shape frame in world, this call
+  Mat3 axes;                      // boxes: world.rotation as a matrix (face normals), this call
   double bounding_radius = 0.0;   // boundingRadius(shape) (m)
   double size = 0.0;              // shapeSize(shape) (m)
   Vec3 velocity = Vec3::Zero();   // of the shape frame's origin, this call (m/s)
