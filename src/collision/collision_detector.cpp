@@ -188,7 +188,8 @@ struct CollisionDetector::Impl {
   // narrowphase waits for them (deferBoxPair).
   const ThreadPool* workers = nullptr;
   std::vector<btBroadphasePair*> deferred;
-  btManifoldArray pair_manifolds;  // idleBoxPair's scratch, on the calling thread
+  // Per worker slot: idleBoxPair's list of a pair's manifolds (room for four from the start).
+  std::vector<btManifoldArray> pair_manifolds;
   uint64_t next_point_id = 1;
 
   ~Impl() { release(); }
@@ -249,11 +250,12 @@ struct CollisionDetector::Impl {
       btCollisionDispatcher::defaultNearCallback(pair, d, gjk_axis);
       return;
     }
-    if (self->isBoxPair(r0, r1) && self->idleBoxPair(pair, r0, r1)) return;
     if (self->workers && self->isBoxPair(r0, r1)) {
       self->deferBoxPair(pair, d);
       return;
     }
+    if (self->isBoxPair(r0, r1) && self->idleBoxPair(pair, r0, r1, self->manifoldScratch(0)))
+      return;
     btCollisionDispatcher::defaultNearCallback(pair, d, info);
   }
 
@@ -262,12 +264,12 @@ struct CollisionDetector::Impl {
            records[static_cast<size_t>(r1)].shape.type == ShapeType::Box;
   }
 
-  // A box pair met before (its algorithm and manifold made in an earlier step, so manifolds
-  // keep their order) whose manifold is empty and whose boxes are apart along a face normal by
-  // more than rounding: the narrowphase would add no point and have none to refresh, so it
-  // is skipped. In a pile most pairs are such neighbours: the broadphase's boxes, grown by
-  // Bullet's margins, overlap theirs.
-  bool idleBoxPair(btBroadphasePair& pair, int r0, int r1) {
+  // A box pair whose algorithm and manifold exist (made in pair order, as without this test)
+  // and whose manifold is empty, with its boxes apart along a face normal by more than
+  // rounding: the narrowphase would add no point and have none to refresh, so it is skipped.
+  // In a pile most pairs are such neighbours: the broadphase's boxes, grown by Bullet's
+  // margins, overlap theirs. Runs beside the narrowphase (processDeferred) or inline.
+  bool idleBoxPair(btBroadphasePair& pair, int r0, int r1, btManifoldArray& scratch) const {
     if (!pair.m_algorithm) return false;
     const ShapeRecord& a = records[static_cast<size_t>(r0)];
     const ShapeRecord& b = records[static_cast<size_t>(r1)];
@@ -277,12 +279,21 @@ struct CollisionDetector::Impl {
                                       b.shape.half_extents, b.axes, b.world.position, gap)) {
       return false;
     }
-    pair_manifolds.resizeNoInitialize(0);
-    pair.m_algorithm->getAllContactManifolds(pair_manifolds);
-    for (int k = 0; k < pair_manifolds.size(); ++k) {
-      if (pair_manifolds[k]->getNumContacts() > 0) return false;
+    scratch.resizeNoInitialize(0);
+    pair.m_algorithm->getAllContactManifolds(scratch);
+    for (int k = 0; k < scratch.size(); ++k) {
+      if (scratch[k]->getNumContacts() > 0) return false;
     }
     return true;
+  }
+
+  btManifoldArray& manifoldScratch(size_t slot) {
+    const size_t slots = workers ? static_cast<size_t>(workers->concurrency()) : 1;
+    while (pair_manifolds.size() < slots) {
+      pair_manifolds.emplace_back();
+      pair_manifolds.back().reserve(4);
+    }
+    return pair_manifolds[slot];
   }
 
   // Bullet's defaultNearCallback up to the narrowphase: the pair's algorithm (and with it, for
@@ -304,10 +315,15 @@ struct CollisionDetector::Impl {
 
   void processDeferred() {
     const btDispatcherInfo& info = world->getDispatchInfo();
+    manifoldScratch(0);  // every slot's list made here, on the calling thread
     workers->forEach(deferred.size(), 16, [&](size_t k) {
       btBroadphasePair& pair = *deferred[k];
       auto* o0 = static_cast<btCollisionObject*>(pair.m_pProxy0->m_clientObject);
       auto* o1 = static_cast<btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+      if (idleBoxPair(pair, o0->getUserIndex(), o1->getUserIndex(),
+                      pair_manifolds[static_cast<size_t>(workers->slot())])) {
+        return;
+      }
       const btCollisionObjectWrapper w0(nullptr, o0->getCollisionShape(), o0,
                                         o0->getWorldTransform(), -1, -1);
       const btCollisionObjectWrapper w1(nullptr, o1->getCollisionShape(), o1,
