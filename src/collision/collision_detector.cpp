@@ -188,7 +188,7 @@ struct CollisionDetector::Impl {
   // narrowphase waits for them (deferBoxPair).
   const ThreadPool* workers = nullptr;
   std::vector<btBroadphasePair*> deferred;
-  // Per worker slot: idleBoxPair's list of a pair's manifolds (room for four from the start).
+  // Per worker slot of this call: idleBoxPair's list of a pair's manifolds.
   std::vector<btManifoldArray> pair_manifolds;
   uint64_t next_point_id = 1;
 
@@ -250,12 +250,16 @@ struct CollisionDetector::Impl {
       btCollisionDispatcher::defaultNearCallback(pair, d, gjk_axis);
       return;
     }
-    if (self->workers && self->isBoxPair(r0, r1)) {
+    // On one thread the idle test runs here, so a skipped pair costs no deferral; on several,
+    // beside the narrowphase.
+    const bool box_pair = self->isBoxPair(r0, r1);
+    if (box_pair && self->pair_manifolds.size() == 1 &&
+        self->idleBoxPair(pair, r0, r1, self->pair_manifolds[0]))
+      return;
+    if (box_pair && self->workers) {
       self->deferBoxPair(pair, d);
       return;
     }
-    if (self->isBoxPair(r0, r1) && self->idleBoxPair(pair, r0, r1, self->manifoldScratch(0)))
-      return;
     btCollisionDispatcher::defaultNearCallback(pair, d, info);
   }
 
@@ -268,7 +272,7 @@ struct CollisionDetector::Impl {
   // and whose manifold is empty, with its boxes apart along a face normal by more than
   // rounding: the narrowphase would add no point and have none to refresh, so it is skipped.
   // In a pile most pairs are such neighbours: the broadphase's boxes, grown by Bullet's
-  // margins, overlap theirs. Runs beside the narrowphase (processDeferred) or inline.
+  // margins, overlap theirs.
   bool idleBoxPair(btBroadphasePair& pair, int r0, int r1, btManifoldArray& scratch) const {
     if (!pair.m_algorithm) return false;
     const ShapeRecord& a = records[static_cast<size_t>(r0)];
@@ -285,15 +289,6 @@ struct CollisionDetector::Impl {
       if (scratch[k]->getNumContacts() > 0) return false;
     }
     return true;
-  }
-
-  btManifoldArray& manifoldScratch(size_t slot) {
-    const size_t slots = workers ? static_cast<size_t>(workers->concurrency()) : 1;
-    while (pair_manifolds.size() < slots) {
-      pair_manifolds.emplace_back();
-      pair_manifolds.back().reserve(4);
-    }
-    return pair_manifolds[slot];
   }
 
   // Bullet's defaultNearCallback up to the narrowphase: the pair's algorithm (and with it, for
@@ -315,12 +310,12 @@ struct CollisionDetector::Impl {
 
   void processDeferred() {
     const btDispatcherInfo& info = world->getDispatchInfo();
-    manifoldScratch(0);  // every slot's list made here, on the calling thread
     workers->forEach(deferred.size(), 16, [&](size_t k) {
       btBroadphasePair& pair = *deferred[k];
       auto* o0 = static_cast<btCollisionObject*>(pair.m_pProxy0->m_clientObject);
       auto* o1 = static_cast<btCollisionObject*>(pair.m_pProxy1->m_clientObject);
-      if (idleBoxPair(pair, o0->getUserIndex(), o1->getUserIndex(),
+      if (pair_manifolds.size() > 1 &&
+          idleBoxPair(pair, o0->getUserIndex(), o1->getUserIndex(),
                       pair_manifolds[static_cast<size_t>(workers->slot())])) {
         return;
       }
@@ -820,6 +815,13 @@ void CollisionDetector::Impl::collect(std::span<const Body> bodies, const Thread
   plane_pairs.clear();
   sdf_pairs.clear();
   workers = pool;
+  // idleBoxPair's lists, one per worker slot, with room for a pair's manifolds from the start.
+  const size_t slots = workers ? static_cast<size_t>(workers->concurrency()) : 1;
+  while (pair_manifolds.size() < slots) {
+    pair_manifolds.emplace_back();
+    pair_manifolds.back().reserve(4);
+  }
+  pair_manifolds.resize(slots);
   if (world) world->performDiscreteCollisionDetection();
   if (!deferred.empty()) processDeferred();
   if (dispatcher) collectManifolds();
