@@ -1,8 +1,8 @@
 // Two doubles in one vector register (SSE2 on x86-64, NEON on AArch64), one per contact row of
 // two islands swept side by side. Each lane takes exactly the IEEE operations the scalar code
-// takes, in the same order (no fused multiply-add: the compiler contracts nothing across
-// these explicit operations unless FMA is enabled, and the project builds for baseline
-// x86-64), so a lane gives the bits of the scalar row it stands for.
+// takes, in the same order, so a lane gives the bits of the scalar row it stands for. Neither
+// may be contracted into fused multiply-adds: contact_solver.cpp, the one user, is built with
+// -ffp-contract=off (FMA is baseline on AArch64; baseline x86-64 has none).
 #pragma once
 
 #include "asperity/math/types.hpp"
