@@ -188,8 +188,12 @@ struct CollisionDetector::Impl {
   // narrowphase waits for them (deferBoxPair).
   const ThreadPool* workers = nullptr;
   std::vector<btBroadphasePair*> deferred;
-  // Per worker slot of this call: idleBoxPair's list of a pair's manifolds.
-  std::vector<btManifoldArray> pair_manifolds;
+  // Per worker slot of this call: idleBoxPair's list of a pair's manifolds, each on its own
+  // cache line (two threads writing one line would pass it back and forth for every pair).
+  struct alignas(64) ManifoldList {
+    btManifoldArray list;
+  };
+  std::vector<ManifoldList> pair_manifolds;
   uint64_t next_point_id = 1;
 
   ~Impl() { release(); }
@@ -254,7 +258,7 @@ struct CollisionDetector::Impl {
     // beside the narrowphase.
     const bool box_pair = self->isBoxPair(r0, r1);
     if (box_pair && self->pair_manifolds.size() == 1 &&
-        self->idleBoxPair(pair, r0, r1, self->pair_manifolds[0]))
+        self->idleBoxPair(pair, r0, r1, self->pair_manifolds[0].list))
       return;
     if (box_pair && self->workers) {
       self->deferBoxPair(pair, d);
@@ -316,7 +320,7 @@ struct CollisionDetector::Impl {
       auto* o1 = static_cast<btCollisionObject*>(pair.m_pProxy1->m_clientObject);
       if (pair_manifolds.size() > 1 &&
           idleBoxPair(pair, o0->getUserIndex(), o1->getUserIndex(),
-                      pair_manifolds[static_cast<size_t>(workers->slot())])) {
+                      pair_manifolds[static_cast<size_t>(workers->slot())].list)) {
         return;
       }
       const btCollisionObjectWrapper w0(nullptr, o0->getCollisionShape(), o0,
@@ -819,7 +823,7 @@ void CollisionDetector::Impl::collect(std::span<const Body> bodies, const Thread
   const size_t slots = workers ? static_cast<size_t>(workers->concurrency()) : 1;
   while (pair_manifolds.size() < slots) {
     pair_manifolds.emplace_back();
-    pair_manifolds.back().reserve(4);
+    pair_manifolds.back().list.reserve(4);
   }
   pair_manifolds.resize(slots);
   if (world) world->performDiscreteCollisionDetection();
