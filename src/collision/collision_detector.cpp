@@ -254,8 +254,8 @@ struct CollisionDetector::Impl {
       btCollisionDispatcher::defaultNearCallback(pair, d, gjk_axis);
       return;
     }
-    // On one thread the idle test runs here, so a skipped pair costs no deferral; on several,
-    // beside the narrowphase.
+    // On one thread (one slot) the idle test runs here, so a skipped pair costs no deferral; on
+    // several, beside the narrowphase.
     const bool box_pair = self->isBoxPair(r0, r1);
     if (box_pair && self->pair_manifolds.size() == 1 &&
         self->idleBoxPair(pair, r0, r1, self->pair_manifolds[0].list))
@@ -470,7 +470,6 @@ void CollisionDetector::Impl::addBody(BodyId id, const Body& body) {
       }
     }
     rec.world = body.pose * rec.shape.local;
-    if (rec.shape.type == ShapeType::Box) rec.axes = rec.world.rotation.toRotationMatrix();
     rec.object = std::make_unique<btCollisionObject>();
     rec.object->setCollisionShape(rec.bullet.shape.get());
     rec.object->setWorldTransform(toBt(rec.world, scale));
