@@ -54,8 +54,9 @@ struct CpuPatchSampler::State {
 
   void prepare(const FrictionSettings& settings);
   void rasterise(const patch::Volume& volume, const patch::ShapeRange (&ranges)[2], bool whole);
-  void sample(std::span<const Body> bodies, Contact& contact, const FrictionSettings& settings,
-              PatchImages* images);
+  // Returns the margins of the depth clip decisions on A and B (patch_reuse.hpp).
+  std::array<patch::DepthMargins, 2> sample(std::span<const Body> bodies, Contact& contact,
+                                            const FrictionSettings& settings, PatchImages* images);
   void fillImages(const patch::Volume& volume, const FrictionSettings& settings,
                   PatchImages& images);
   void reserveLike(const State& other);
@@ -158,8 +159,10 @@ void CpuPatchSampler::State::fillImages(const patch::Volume& volume,
   }
 }
 
-void CpuPatchSampler::State::sample(std::span<const Body> bodies, Contact& contact,
-                                    const FrictionSettings& settings, PatchImages* images) {
+std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<const Body> bodies,
+                                                                  Contact& contact,
+                                                                  const FrictionSettings& settings,
+                                                                  PatchImages* images) {
   const Clock::time_point t0 = Clock::now();
   prepare(settings);
   const patch::Volume volume = patch::makeVolume(contact, settings);
@@ -190,6 +193,7 @@ void CpuPatchSampler::State::sample(std::span<const Body> bodies, Contact& conta
   if (images != nullptr) fillImages(volume, settings, *images);
   patch_ms += msBetween(t0, t1);
   averaging_ms += msBetween(t1, t2);
+  return {raster[0].depth, raster[1].depth};
 }
 
 CpuPatchSampler::CpuPatchSampler()
@@ -219,7 +223,7 @@ void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::spa
     State& st = *state_;
     st.patch_ms = st.averaging_ms = 0.0;
     for (size_t i = 0; i < contacts.size(); ++i)
-      if (!reused_[i]) st.sample(bodies, contacts[i], settings, nullptr);
+      if (!reused_[i]) reuse_->margins(i) = st.sample(bodies, contacts[i], settings, nullptr);
     patch_ms_ = st.patch_ms;
     averaging_ms_ = st.averaging_ms;
   } else {
@@ -257,7 +261,7 @@ void CpuPatchSampler::sampleOnPool(std::span<const Body> bodies, std::span<Conta
   pool_->forEach(contacts.size(), 4, [&](size_t i) {
     if (reused_[i]) return;
     State& st = *worker_states_[static_cast<size_t>(pool_->slot())];
-    st.sample(bodies, contacts[i], settings, nullptr);
+    reuse_->margins(i) = st.sample(bodies, contacts[i], settings, nullptr);
   });
   patch_ms_ = averaging_ms_ = 0.0;
   for (const auto& st : worker_states_) {

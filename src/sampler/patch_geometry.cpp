@@ -52,7 +52,7 @@ void pushPolygon(const Volume& volume, PolygonVertex* v, int count, bool smooth,
   if (raster.side == Side::A) std::reverse(v, v + count);
   shiftUv(v, count);
   raster.planars.emplace_back();
-  if (!makePlanar(volume, v, count, smooth, material, raster.planars.back())) {
+  if (!makePlanar(volume, v, count, smooth, material, raster.planars.back(), raster.depth)) {
     raster.planars.pop_back();
     return;
   }
@@ -61,14 +61,31 @@ void pushPolygon(const Volume& volume, PolygonVertex* v, int count, bool smooth,
 }
 
 // Whether a box face, centred at c with edge half-vectors et and eb (contact frame), surely
-// misses the volume: beyond the depth clip, or more than a pixel beyond the footprint (where
-// makePlanar rejects it too); margins far above rounding.
-bool faceMissesVolume(const Volume& volume, const Vec3& c, const Vec3& et, const Vec3& eb) {
+// misses the volume: beyond the depth clip (a decision noted in the depth margins), or more
+// than a pixel beyond the footprint (where makePlanar rejects it too, at any depth); margins
+// far above rounding.
+bool faceMissesVolume(const Volume& volume, const Vec3& c, const Vec3& et, const Vec3& eb,
+                      SurfaceRaster& raster) {
   const Vec3 reach = et.cwiseAbs() + eb.cwiseAbs();
-  const double depth = volume.half_depth + 1e-9 * volume.width;
   const double side = 0.5 * volume.width + volume.pixel;
-  return c.z() - reach.z() > depth || c.z() + reach.z() < -depth ||
-         std::abs(c.x()) - reach.x() > side || std::abs(c.y()) - reach.y() > side;
+  if (std::abs(c.x()) - reach.x() > side || std::abs(c.y()) - reach.y() > side) return true;
+  const double depth = volume.half_depth + 1e-9 * volume.width;
+  const double zmin = c.z() - reach.z(), zmax = c.z() + reach.z();
+  if (!(zmin > depth || zmax < -depth)) return false;
+  raster.depth.note(zmin > depth ? zmin : zmax, volume.half_depth);
+  return true;
+}
+
+// Whether a bounding sphere of radius `reach` about the shape's origin misses the volume (a
+// miss along n is a depth clip decision).
+bool sphereMissesVolume(const Volume& volume, const Placement& pl, double reach,
+                        SurfaceRaster& raster) {
+  const double half = 0.5 * volume.width;
+  if (std::abs(pl.o.x()) > reach + half || std::abs(pl.o.y()) > reach + half) return true;
+  const double h = volume.half_depth, zmin = pl.o.z() - reach, zmax = pl.o.z() + reach;
+  if (!(zmin > h || zmax < -h)) return false;
+  raster.depth.note(zmin > h ? zmin : zmax, h);
+  return true;
 }
 
 void rasteriseBox(const Volume& volume, const Shape& shape, const Placement& pl,
@@ -79,18 +96,13 @@ void rasteriseBox(const Volume& volume, const Shape& shape, const Placement& pl,
   const double scale = detail::textureScale(shape);
   const Vec3 h = shape.half_extents;
   // Quick reject: the bounding sphere misses the volume.
-  const double radius = h.norm();
-  if (std::abs(pl.o.z()) > radius + volume.half_depth ||
-      std::abs(pl.o.x()) > radius + 0.5 * volume.width ||
-      std::abs(pl.o.y()) > radius + 0.5 * volume.width) {
-    return;
-  }
+  if (sphereMissesVolume(volume, pl, h.norm(), raster)) return;
   // Each face that faces the other body is a quad (corners counter-clockwise seen from outside).
   for (const SurfaceFrame& f : kFaces) {
     const Vec3 nc = pl.m * f.n;
     if (!facesOther(raster.side, nc.z())) continue;
     const Vec3 centre = f.n.cwiseProduct(h), et = f.t.cwiseProduct(h), eb = f.b.cwiseProduct(h);
-    if (faceMissesVolume(volume, pl.m * centre + pl.o, pl.m * et, pl.m * eb)) continue;
+    if (faceMissesVolume(volume, pl.m * centre + pl.o, pl.m * et, pl.m * eb, raster)) continue;
     const SurfaceFrame tex = rotateTexture(f, shape.surface.texture_rotation);
     const Vec3 tc = pl.m * tex.t, bc = pl.m * tex.b;
     static constexpr double su[4] = {-1, 1, 1, -1}, sv[4] = {-1, -1, 1, 1};
@@ -155,11 +167,8 @@ void rasteriseCurvedShape(const Volume& volume, const Shape& shape, const Placem
   const double reach = shape.type == ShapeType::Sphere
                            ? shape.radius
                            : std::hypot(shape.radius, shape.half_height) + shape.radius;
-  const double half = 0.5 * volume.width;
-  if (std::abs(pl.o.z()) > reach + volume.half_depth || std::abs(pl.o.x()) > reach + half ||
-      std::abs(pl.o.y()) > reach + half) {
-    return;
-  }
+  if (sphereMissesVolume(volume, pl, reach, raster)) return;
+  raster.depth.forget();  // the ray casts' margins are not tracked
   Curved prim;
   prim.shape = &shape;
   prim.to_local = pl.m.transpose();
@@ -176,6 +185,7 @@ void rasteriseMesh(const Volume& volume, const Shape& shape, const Placement& pl
                    GeometryScratch& scratch, SurfaceRaster& raster) {
   const CachedMesh& cached = meshes.get(shape);
   const ShapeMesh& mesh = cached.mesh;
+  raster.depth.forget();  // the query below depends on the depth clip
   // The volume's box in the shape frame, then the triangles whose boxes overlap it.
   const Mat3 to_local = pl.m.transpose();
   Aabb box;

@@ -95,15 +95,16 @@ void SurfaceRaster::reset(Side s, int resolution) {
   primitive.resize(static_cast<size_t>(pixels));
   planars.clear();
   curveds.clear();
+  depth = DepthMargins::unlimited();
 }
 
 namespace {
 
-// The polygon's part within the depth clip, |z| <= h (widened far beyond rounding): its extent
-// in x and y, as [lo, hi] per axis. False when no part is within.
-bool extentWithinDepth(const Volume& volume, const PolygonVertex* vtx, int count,
+// The polygon's part within the depth clip widened by `widen`, |z| <= h + widen (and far beyond
+// rounding): its extent in x and y, as [lo, hi] per axis. False when no part is within.
+bool extentWithinDepth(const Volume& volume, double widen, const PolygonVertex* vtx, int count,
                        std::array<double, 2>& lo, std::array<double, 2>& hi) {
-  const double h = volume.half_depth + 1e-9 * volume.width;
+  const double h = volume.half_depth + widen + 1e-9 * volume.width;
   // Sutherland-Hodgman against z <= h, then -z <= h (a convex polygon of up to 4 corners
   // gains at most one corner per plane).
   std::array<Vec3, 8> points, clipped;
@@ -145,10 +146,28 @@ bool centreWithin(const Volume& volume, double a, double b) {
   return first <= last;
 }
 
+// Whether no pixel centre can lie in the extent [lo, hi].
+bool noCentreWithin(const Volume& volume, const std::array<double, 2>& lo,
+                    const std::array<double, 2>& hi) {
+  return !centreWithin(volume, lo[0], hi[0]) || !centreWithin(volume, lo[1], hi[1]);
+}
+
+// Notes rejecting a face seen nearly edge-on because no pixel centre lies in its part within
+// the clip: its fragments beyond the clip may move in by the clip's own margin, 0.005 w
+// (SPEC 3), when the face is still rejected with the clip that much deeper, else unknown.
+void noteEdgeOn(const Volume& volume, const PolygonVertex* vtx, int count, DepthMargins& depth) {
+  const double widen = 0.005 * volume.width;
+  std::array<double, 2> lo{}, hi{};
+  if (!extentWithinDepth(volume, widen, vtx, count, lo, hi) || noCentreWithin(volume, lo, hi))
+    depth.limitOutside(widen);
+  else
+    depth.forget();
+}
+
 }  // namespace
 
 bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool smooth,
-                const Material& material, Planar& out) {
+                const Material& material, Planar& out, DepthMargins& depth) {
   // Reject: entirely beyond the depth clip or the footprint.
   double zmin = kInf, zmax = -kInf, xmin = kInf, xmax = -kInf, ymin = kInf, ymax = -kInf;
   for (int k = 0; k < count; ++k) {
@@ -157,19 +176,26 @@ bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool 
     xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
     ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
   }
-  if (zmin > volume.half_depth || zmax < -volume.half_depth) return false;
+  const double h = volume.half_depth;
+  if (zmin > h || zmax < -h) {
+    depth.note(zmin > h ? zmin : zmax, h);
+    return false;
+  }
   pixelRange(volume, xmin, xmax, out.i0, out.i1);
   pixelRange(volume, ymin, ymax, out.j0, out.j1);
   if (out.i0 > out.i1 || out.j0 > out.j1) return false;
   // A face seen nearly edge-on (a box's side beyond its bottom face) reaches the depth clip in
   // a thin band only: when no pixel centre can lie in that band's extent, nothing is covered.
   // Worth the clipping where the range is two pixels or less across (a band between centres).
+  // Without clipping, that holds at any depth (clipping only narrows the extent).
   if (out.i1 - out.i0 <= 1 || out.j1 - out.j0 <= 1) {
     std::array<double, 2> lo{xmin, ymin}, hi{xmax, ymax};
-    if (zmin < -volume.half_depth || zmax > volume.half_depth) {
-      if (!extentWithinDepth(volume, vtx, count, lo, hi)) return false;
+    const bool clipped = zmin < -h || zmax > h;
+    if ((clipped && !extentWithinDepth(volume, 0.0, vtx, count, lo, hi)) ||
+        noCentreWithin(volume, lo, hi)) {
+      if (clipped) noteEdgeOn(volume, vtx, count, depth);
+      return false;
     }
-    if (!centreWithin(volume, lo[0], hi[0]) || !centreWithin(volume, lo[1], hi[1])) return false;
   }
   // Edge-on (zero projected area) primitives cover no pixel centre.
   const Vec3 &p0 = vtx[0].p, &p1 = vtx[1].p, &p2 = vtx[2].p;
@@ -210,12 +236,12 @@ bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool 
 
 namespace {
 
-// Whether pixel centre (x, y) is inside the primitive and its depth clip (the exact test).
-bool insidePlanar(const Planar& prim, double h, double x, double y) {
+// Whether pixel centre (x, y) is inside the primitive's edges (the exact test).
+bool insideEdges(const Planar& prim, double x, double y) {
   for (int k = 0; k < prim.edge_count; ++k) {
     if (!prim.edges[static_cast<size_t>(k)].inside(x, y)) return false;
   }
-  return std::abs(prim.z.at(x, y)) <= h;
+  return true;
 }
 
 // Narrows [lo, hi] to the pixels of the row where a x + rest satisfies the half-line (> 0, or
@@ -284,6 +310,7 @@ struct Cuts {
   std::array<int, 4> edges{};
   int edge_count = 0;
   bool depth = false;
+  double z_least = 0.0, z_most = 0.0;  // over the box
 };
 
 // The pixel-centre box of a primitive: x in [x0, x1], y in [y0, y1], and the largest |x|, |y|.
@@ -291,14 +318,19 @@ struct CentreBox {
   double x0, x1, y0, y1, reach_x, reach_y;
 };
 
+// The least of the affine c + dx x + dy y over the box: at the corner its slopes point away
+// from.
+double leastOverBox(double c, double dx, double dy, const CentreBox& box) {
+  const double x = dx >= 0.0 ? box.x0 : box.x1, y = dy >= 0.0 ? box.y0 : box.y1;
+  return c + dx * x + dy * y;
+}
+
 // Whether the affine c + dx x + dy y stays above `floor` over the box, by a margin far above
-// the rounding of evaluating it at a pixel centre: an affine function is least at the corner
-// its slopes point away from.
+// the rounding of evaluating it at a pixel centre.
 bool aboveOverBox(double c, double dx, double dy, double floor, const CentreBox& box) {
   const double margin = 1e-9 * (std::abs(c) + std::abs(dx) * box.reach_x +
                                 std::abs(dy) * box.reach_y + std::abs(floor));
-  const double x = dx >= 0.0 ? box.x0 : box.x1, y = dy >= 0.0 ? box.y0 : box.y1;
-  return c + dx * x + dy * y > floor + margin;
+  return leastOverBox(c, dx, dy, box) > floor + margin;
 }
 
 Cuts cutsWithin(const Volume& volume, const Planar& prim, int j0, int j1) {
@@ -320,10 +352,28 @@ Cuts cutsWithin(const Volume& volume, const Planar& prim, int j0, int j1) {
   const double h = volume.half_depth;
   cuts.depth = !aboveOverBox(prim.z.c, prim.z.dx, prim.z.dy, -h, box) ||
                !aboveOverBox(-prim.z.c, -prim.z.dx, -prim.z.dy, -h, box);
+  cuts.z_least = leastOverBox(prim.z.c, prim.z.dx, prim.z.dy, box);
+  cuts.z_most = -leastOverBox(-prim.z.c, -prim.z.dx, -prim.z.dy, box);
   return cuts;
 }
 
-// insidePlanar over the cutting constraints only (the others hold in the box).
+// Notes the clip decisions of the pixel centres lo..hi of a row where z = zr + dx x. Each
+// margin is least at an end of the row, or beside where z crosses -h or h.
+void noteRow(const Volume& volume, double zr, double dx, double h, int lo, int hi,
+             DepthMargins& depth) {
+  auto note = [&](double i) {
+    if (i >= lo && i <= hi) depth.note(zr + dx * volume.centreX(static_cast<int>(i)), h);
+  };
+  note(lo), note(hi);
+  if (dx == 0.0) return;
+  for (const double level : {-h, h}) {
+    const double i = std::floor(((level - zr) / dx - volume.centreX(0)) / volume.pixel);
+    note(i), note(i + 1);
+  }
+}
+
+// The exact test (edges, depth clip) over the cutting constraints only (the others hold in
+// the box).
 bool insideCuts(const Planar& prim, const Cuts& cuts, double h, double x, double y) {
   for (int k = 0; k < cuts.edge_count; ++k) {
     if (!prim.edges[static_cast<size_t>(cuts.edges[static_cast<size_t>(k)])].inside(x, y)) {
@@ -348,10 +398,13 @@ void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, Surfa
     for (int j = j0; j <= j1; ++j) {
       for (int i = rowLo(j); i <= rowHi(j); ++i) {
         const double x = volume.centreX(i), y = volume.centreX(j);
-        if (!insidePlanar(prim, h, x, y)) continue;
+        if (!insideEdges(prim, x, y)) continue;
+        const double z = prim.z.at(x, y);
+        raster.depth.note(z, h);
+        if (!(std::abs(z) <= h)) continue;
         raster.cover(j, i, i);
         const size_t idx = static_cast<size_t>(j * r + i);
-        const float k = sign * static_cast<float>(prim.z.at(x, y));
+        const float k = sign * static_cast<float>(z);
         if (k > raster.key[idx]) {
           raster.key[idx] = k;
           raster.primitive[idx] = id;
@@ -362,6 +415,7 @@ void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, Surfa
   }
   if (j0 > j1) return;
   const Cuts cuts = cutsWithin(volume, prim, j0, j1);
+  if (!cuts.depth) raster.depth.note(cuts.z_least, h), raster.depth.note(cuts.z_most, h);
   std::array<EdgeBound, 4> bounds;
   for (int k = 0; k < cuts.edge_count; ++k) {
     const auto edge = static_cast<size_t>(cuts.edges[static_cast<size_t>(k)]);
@@ -372,7 +426,10 @@ void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, Surfa
     // The row's span: the depth clip and every cutting edge bound x from one side or both.
     int lo = rowLo(j), hi = rowHi(j);
     const double zr = prim.z.c + prim.z.dy * y;
-    if (cuts.depth && lo <= hi) clipSpan(volume, prim.z.dx, -h - zr, h - zr, lo, hi);
+    if (cuts.depth && lo <= hi) {
+      noteRow(volume, zr, prim.z.dx, h, lo, hi, raster.depth);
+      clipSpan(volume, prim.z.dx, -h - zr, h - zr, lo, hi);
+    }
     for (int k = 0; k < cuts.edge_count && lo <= hi; ++k) {
       const auto edge = static_cast<size_t>(cuts.edges[static_cast<size_t>(k)]);
       clipEdge(bounds[static_cast<size_t>(k)], prim.edges[edge], y, j, r, lo, hi);

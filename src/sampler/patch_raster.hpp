@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -86,6 +87,39 @@ struct Curved {
   Material material;
 };
 
+// How far (m) one surface's depth clip decisions are from changing, per plane of the clip
+// (z = h, z = -h) and per side of it: `in_*` how far a kept fragment lies inside that plane,
+// `out_*` how far a clipped one lies beyond it, at the least. Patch coherence keeps a sample
+// while its surfaces and the clip moved by less (patch_reuse.hpp). The default, 0, knows
+// nothing; `unlimited()` is where no decision has been made yet.
+struct DepthMargins {
+  double in_top = 0.0, out_top = 0.0, in_bottom = 0.0, out_bottom = 0.0;
+
+  static DepthMargins unlimited() {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    return {inf, inf, inf, inf};
+  }
+  // A decision on a fragment at depth z (the least and the largest z of a primitive decided
+  // as a whole).
+  void note(double z, double h) {
+    if (z <= h)
+      in_top = std::min(in_top, h - z);
+    else
+      out_top = std::min(out_top, z - h);
+    if (z >= -h)
+      in_bottom = std::min(in_bottom, z + h);
+    else
+      out_bottom = std::min(out_bottom, -h - z);
+  }
+  // A fragment beyond the clip may move in by no more than `m` (either plane).
+  void limitOutside(double m) {
+    out_top = std::min(out_top, m);
+    out_bottom = std::min(out_bottom, m);
+  }
+  // Decisions whose margins are not known.
+  void forget() { *this = DepthMargins{}; }
+};
+
 // One surface's pixels: for each, the kept fragment's primitive and its depth key.
 struct SurfaceRaster {
   Side side = Side::B;
@@ -102,6 +136,8 @@ struct SurfaceRaster {
   // (empty when lo > hi).
   std::vector<int> cov_lo, cov_hi;
 
+  DepthMargins depth;  // of the depth clip decisions made for this surface
+
   void reset(Side s, int resolution);
   bool covered(int pixel) const { return key[static_cast<size_t>(pixel)] > kEmpty; }
   // Widens row j's coverage span to [lo, hi] (lo <= hi).
@@ -115,7 +151,8 @@ struct SurfaceRaster {
 
 // Builds a planar primitive from a counter-clockwise (seen from +n) convex polygon of up to 4
 // vertices (contact frame) with per-vertex attributes u, v and frame (9 floats). Returns false
-// when it is edge-on or outside the volume's footprint.
+// when it is edge-on or outside the volume's footprint; notes the depth clip decisions it
+// makes in `depth`.
 struct PolygonVertex {
   Vec3 p = Vec3::Zero();
   double u = 0.0, v = 0.0;
@@ -125,7 +162,7 @@ struct PolygonVertex {
 void setFloatUv(Planar& prim);
 
 bool makePlanar(const Volume& volume, const PolygonVertex* vertices, int count, bool smooth,
-                const Material& material, Planar& out);
+                const Material& material, Planar& out, DepthMargins& depth);
 
 // The pixel index range [lo, hi] whose centres may lie in [a, b] along one axis (clamped to
 // the grid; empty when lo > hi).

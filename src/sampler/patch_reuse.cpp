@@ -24,18 +24,66 @@ std::array<Vec3, 3> framePoints(const Body& body, const Contact& c, double half_
           body.pose.applyInverse(c.point + half_width * c.b)};
 }
 
-// Whether a body's frame points moved by less than the tolerances: `along` in the contact
-// plane, `depth` along the normal (the depth clip is far thinner than a pixel is wide).
-bool within(const Body& body, const Contact& c, const std::array<Vec3, 3>& then, double half_width,
-            const Tolerance& tol) {
+// How far a body moved since the sample, relative to the contact frame: the largest
+// displacement of the frame's points in the contact plane and along the normal, and the range
+// [rise_least, rise_most] of its surface's move along n over the whole footprint. (A rigid
+// motion's normal displacement is affine over the plane: at the footprint's corners it is
+// d0 +- (|d1 - d0| + |d2 - d0|).) NaN stays NaN.
+struct Motion {
+  double along = 0.0, depth = 0.0, tilt = 0.0, rise_least = 0.0, rise_most = 0.0;
+};
+
+Motion motionOf(const Body& body, const Contact& c, const std::array<Vec3, 3>& then,
+                double half_width) {
   const std::array<Vec3, 3> now = framePoints(body, c, half_width);
   const Vec3 n = body.pose.rotation.conjugate() * c.normal;
+  std::array<double, 3> d{};
+  Motion m;
   for (size_t i = 0; i < 3; ++i) {
-    const Vec3 d = now[i] - then[i];
-    const double depth = d.dot(n);
-    if (!(std::abs(depth) < tol.depth) || !((d - depth * n).norm() < tol.along)) return false;
+    const Vec3 delta = now[i] - then[i];
+    d[i] = delta.dot(n);
+    m.along = std::max((delta - d[i] * n).norm(), m.along);
+    m.depth = std::max(std::abs(d[i]), m.depth);
   }
-  return true;
+  // The frame point moved by d along n on the body: the body's surface by -d in the frame.
+  m.tilt = std::max(std::abs(d[1] - d[0]), std::abs(d[2] - d[0]));
+  const double spread = std::abs(d[1] - d[0]) + std::abs(d[2] - d[0]);
+  m.rise_least = -d[0] - spread;
+  m.rise_most = -d[0] + spread;
+  return m;
+}
+
+// Whether every clip decision of a surface with these margins still holds after it rose by
+// [m.rise_least, m.rise_most] and the clip's half depth grew by `grow`: a kept fragment stays
+// inside each plane and a clipped one beyond it.
+bool clipHolds(const Motion& m, double grow, const DepthMargins& d) {
+  // Beside z = h the fragment's h - z changes by grow - rise; beside z = -h its z + h by
+  // rise + grow.
+  return grow - m.rise_most > -d.in_top && grow - m.rise_least < d.out_top &&
+         m.rise_least + grow > -d.in_bottom && m.rise_most + grow < d.out_bottom;
+}
+
+// Whether the sample still holds: both bodies moved by less than `along` in the contact plane,
+// and along the normal by less than the fixed tolerance (the depth clip is far thinner than a
+// pixel is wide) or so that no fragment crossed the clip, itself grown by half the change of
+// |phi|. A rise along n changes nothing else (the patch is seen along n); a tilt also turns
+// the meso normals, so it stays within the fixed tolerance either way.
+bool holds(const Motion& a, const Motion& b, double phi_then, double phi_now,
+           const std::array<DepthMargins, 2>& depth, const Tolerance& tol) {
+  if (!(a.along < tol.along && b.along < tol.along)) return false;
+  if (std::abs(phi_now - phi_then) < tol.depth && a.depth < tol.depth && b.depth < tol.depth)
+    return true;
+  if (!(a.tilt < tol.depth && b.tilt < tol.depth)) return false;
+  const double grow = 0.5 * (std::abs(phi_now) - std::abs(phi_then));
+  return clipHolds(a, grow, depth[0]) && clipHolds(b, grow, depth[1]);
+}
+
+// Margins less a sliver far above the rounding of the margins and of the motion.
+DepthMargins lessRounding(DepthMargins d, double width) {
+  const double sliver = 1e-9 * width;
+  for (double* m : {&d.in_top, &d.out_top, &d.in_bottom, &d.out_bottom})
+    *m = std::max(0.0, *m - sliver);
+  return d;
 }
 
 }  // namespace
@@ -50,12 +98,15 @@ const PatchReuse::Sample* PatchReuse::find(const Key& key) const {
                                          : nullptr;
 }
 
-PatchReuse::Sample PatchReuse::record(std::span<const Body> bodies, const Contact& c) const {
+PatchReuse::Sample PatchReuse::record(std::span<const Body> bodies, const Contact& c,
+                                      const std::array<DepthMargins, 2>& depth) const {
   const double half = 0.5 * settings_.patch_width;
   Sample s;
   s.on_a = framePoints(bodies[c.body_a], c, half);
   s.on_b = framePoints(bodies[c.body_b], c, half);
   s.phi = c.phi;
+  s.depth = {lessRounding(depth[0], settings_.patch_width),
+             lessRounding(depth[1], settings_.patch_width)};
   s.mu = c.mu;
   s.covered_pixels = c.covered_pixels;
   s.fallback = c.fallback;
@@ -65,6 +116,7 @@ PatchReuse::Sample PatchReuse::record(std::span<const Body> bodies, const Contac
 void PatchReuse::reuse(std::span<const Body> bodies, std::span<Contact> contacts,
                        const FrictionSettings& settings, std::vector<uint8_t>& reused) {
   reused.assign(contacts.size(), 0);
+  margins_.assign(contacts.size(), {});
   if (!sameSettings(settings, settings_)) {
     keys_.clear();
     samples_.clear();
@@ -80,9 +132,9 @@ void PatchReuse::reuse(std::span<const Body> bodies, std::span<Contact> contacts
     const Sample* found = find(keyOf(c));
     if (found == nullptr) continue;
     const Sample& s = *found;
-    if (!(std::abs(c.phi - s.phi) < tol.depth) || !within(bodies[c.body_a], c, s.on_a, half, tol) ||
-        !within(bodies[c.body_b], c, s.on_b, half, tol))
-      continue;
+    const Motion a = motionOf(bodies[c.body_a], c, s.on_a, half);
+    const Motion b = motionOf(bodies[c.body_b], c, s.on_b, half);
+    if (!holds(a, b, s.phi, c.phi, s.depth, tol)) continue;
     c.mu = s.mu;
     c.covered_pixels = s.covered_pixels;
     c.fallback = s.fallback;
@@ -109,7 +161,7 @@ void PatchReuse::remember(std::span<const Body> bodies, std::span<const Contact>
     const bool keep = reused[i] && old != next_keys_.end() && *old == key;
     keys_.push_back(key);
     samples_.push_back(keep ? next_samples_[static_cast<size_t>(old - next_keys_.begin())]
-                            : record(bodies, contacts[i]));
+                            : record(bodies, contacts[i], margins_[i]));
   }
 }
 

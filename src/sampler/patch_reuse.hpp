@@ -5,9 +5,13 @@
 //
 // What the patch sees of a surface is fixed by where the contact frame (point, t, b) and the
 // depth clip lie on that surface's body, so each sample remembers the point, the point + w/2 t
-// and the point + w/2 b in both bodies' frames, and phi. Contacts are matched across steps by
-// their warm-start identity (bodies, shapes, key). The decisions are made before any sampling
-// and depend on the contacts alone, so they are the same for every thread count.
+// and the point + w/2 b in both bodies' frames, and phi. Along the normal a sample also holds
+// while no fragment can have crossed the depth clip, when the sampler gives the margins of its
+// clip decisions (DepthMargins), so that a face lying well inside the clip may rise and sink
+// by more than the fixed tolerance. Contacts
+// are matched across steps by their warm-start identity (bodies, shapes, key). The decisions
+// are made before any sampling and depend on the contacts alone, so they are the same for
+// every thread count.
 #pragma once
 
 #include <array>
@@ -20,6 +24,7 @@
 #include "asperity/collision/contact.hpp"
 #include "asperity/dynamics/body.hpp"
 #include "asperity/sampler/friction_provider.hpp"
+#include "sampler/patch_raster.hpp"
 
 namespace asperity::patch {
 
@@ -30,6 +35,9 @@ class PatchReuse {
   // settings.reuse_pixels is 0 or the settings changed.
   void reuse(std::span<const Body> bodies, std::span<Contact> contacts,
              const FrictionSettings& settings, std::vector<uint8_t>& reused);
+  // Where a sampler puts contact i's depth clip margins (A's, B's) when it samples it, between
+  // reuse() and remember(); those it leaves know nothing.
+  std::array<DepthMargins, 2>& margins(size_t i) { return margins_[i]; }
   // After sampling the others: remembers the freshly sampled contacts as they are now, keeps
   // the reused ones' original record and forgets the contacts that are gone.
   void remember(std::span<const Body> bodies, std::span<const Contact> contacts,
@@ -40,12 +48,14 @@ class PatchReuse {
   struct Sample {
     std::array<Vec3, 3> on_a, on_b;  // the frame's three points in A's and B's body frames
     double phi = 0.0;
+    std::array<DepthMargins, 2> depth;  // A's, B's
     DirectionalMu mu;
     int covered_pixels = 0;
     bool fallback = false;
   };
   static Key keyOf(const Contact& c);
-  Sample record(std::span<const Body> bodies, const Contact& c) const;
+  Sample record(std::span<const Body> bodies, const Contact& c,
+                const std::array<DepthMargins, 2>& depth) const;
   const Sample* find(const Key& key) const;
 
   // keys_[i] is samples_[i]'s identity, sorted; the keys are apart from the (large) samples so
@@ -54,8 +64,9 @@ class PatchReuse {
   std::vector<Key> keys_, next_keys_;
   std::vector<Sample> samples_, next_samples_;
   std::vector<std::pair<Key, uint32_t>> order_;
-  FrictionSettings settings_;  // those the samples were taken with
-  double tolerance_ = 0.0;     // m: reuse_pixels patch pixels
+  std::vector<std::array<DepthMargins, 2>> margins_;  // this call's, per contact
+  FrictionSettings settings_;                         // those the samples were taken with
+  double tolerance_ = 0.0;                            // m: reuse_pixels patch pixels
 };
 
 }  // namespace asperity::patch

@@ -43,7 +43,8 @@ TEST(PatchReuse, OnByDefaultAndOffAtZero) {
 }
 
 // The world's cpu sampler with patch coherence, checked at every call against a fresh sample
-// of each contact it kept: the largest difference of any direction's mu.
+// of each contact it kept: the largest difference of any direction's mu, and how many of the
+// kept (contact, direction) pairs differ by more than 0.005.
 class CheckedReuse : public FrictionProvider {
  public:
   std::string name() const override { return "cpu"; }
@@ -55,12 +56,17 @@ class CheckedReuse : public FrictionProvider {
     reference_.computeCoefficients(bodies, fresh, every_step);
     sampler_.computeCoefficients(bodies, contacts, settings);
     for (size_t i = 0; i < contacts.size(); ++i)
-      for (int k = 0; k < contacts[i].mu.count; ++k)
-        worst = std::max(worst, std::abs(double(contacts[i].mu.mu[static_cast<size_t>(k)]) -
-                                         double(fresh[i].mu.mu[static_cast<size_t>(k)])));
+      for (int k = 0; k < contacts[i].mu.count; ++k) {
+        const double apart = std::abs(double(contacts[i].mu.mu[static_cast<size_t>(k)]) -
+                                      double(fresh[i].mu.mu[static_cast<size_t>(k)]));
+        worst = std::max(worst, apart);
+        kept += apart > 0.0;
+        far += apart > 0.005;
+      }
   }
   int lastReusedCount() const override { return sampler_.lastReusedCount(); }
   double worst = 0.0;
+  int kept = 0, far = 0;  // (contact, direction) pairs that differ at all, by more than 0.005
 
  private:
   CpuPatchSampler sampler_, reference_;
@@ -72,10 +78,13 @@ TEST(PatchReuse, RestingStackKeepsItsSamplesWithFreshCoefficients) {
   const CheckedReuse& check = *checked;
   world->setFrictionProvider(std::move(checked));
   reusedShare(*world, 100);  // settle
-  EXPECT_GT(reusedShare(*world, 50), 0.7);
+  EXPECT_GT(reusedShare(*world, 50), 0.8);
   // A kept sample is what sampling the contact again would give, to well within mu's scale
-  // (mu 0.2 to 0.4 here; 0.005 measured at 0.1 pixel, 0.06 at 0.25).
-  EXPECT_LT(check.worst, 0.01);
+  // (mu 0.2 to 0.4 here): nearly always within 0.005 (a row of pixel centres that a face's
+  // edge crossed within its 0.1 pixel move may make one contact differ by more).
+  EXPECT_GT(check.kept, 10000);
+  EXPECT_LT(check.far, check.kept / 1000);
+  EXPECT_LT(check.worst, 0.02);
 }
 
 TEST(PatchReuse, SlidingBoxesAreSampledEveryStep) {
