@@ -72,7 +72,7 @@ bool faceMissesVolume(const Volume& volume, const Vec3& c, const Vec3& et, const
   const double depth = volume.half_depth + 1e-9 * volume.width;
   const double zmin = c.z() - reach.z(), zmax = c.z() + reach.z();
   if (!(zmin > depth || zmax < -depth)) return false;
-  raster.depth.note(zmin > depth ? zmin : zmax, volume.half_depth);
+  raster.depth.noteRange(zmin, zmax, volume.half_depth);
   return true;
 }
 
@@ -84,7 +84,7 @@ bool sphereMissesVolume(const Volume& volume, const Placement& pl, double reach,
   if (std::abs(pl.o.x()) > reach + half || std::abs(pl.o.y()) > reach + half) return true;
   const double h = volume.half_depth, zmin = pl.o.z() - reach, zmax = pl.o.z() + reach;
   if (!(zmin > h || zmax < -h)) return false;
-  raster.depth.note(zmin > h ? zmin : zmax, h);
+  raster.depth.noteRange(zmin, zmax, h);
   return true;
 }
 

@@ -178,7 +178,7 @@ bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool 
   }
   const double h = volume.half_depth;
   if (zmin > h || zmax < -h) {
-    depth.note(zmin > h ? zmin : zmax, h);
+    depth.noteRange(zmin, zmax, h);
     return false;
   }
   pixelRange(volume, xmin, xmax, out.i0, out.i1);
@@ -415,7 +415,7 @@ void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, Surfa
   }
   if (j0 > j1) return;
   const Cuts cuts = cutsWithin(volume, prim, j0, j1);
-  if (!cuts.depth) raster.depth.note(cuts.z_least, h), raster.depth.note(cuts.z_most, h);
+  if (!cuts.depth) raster.depth.noteRange(cuts.z_least, cuts.z_most, h);
   std::array<EdgeBound, 4> bounds;
   for (int k = 0; k < cuts.edge_count; ++k) {
     const auto edge = static_cast<size_t>(cuts.edges[static_cast<size_t>(k)]);

@@ -99,8 +99,7 @@ struct DepthMargins {
     constexpr double inf = std::numeric_limits<double>::infinity();
     return {inf, inf, inf, inf};
   }
-  // A decision on a fragment at depth z (the least and the largest z of a primitive decided
-  // as a whole).
+  // A decision on a fragment at depth z.
   void note(double z, double h) {
     if (z <= h)
       in_top = std::min(in_top, h - z);
@@ -110,6 +109,12 @@ struct DepthMargins {
       in_bottom = std::min(in_bottom, z + h);
     else
       out_bottom = std::min(out_bottom, -h - z);
+  }
+  // A decision on a whole primitive, its fragments at depths in [zmin, zmax]: the extremes
+  // bound every margin.
+  void noteRange(double zmin, double zmax, double h) {
+    note(zmin, h);
+    note(zmax, h);
   }
   // A fragment beyond the clip may move in by no more than `m` (either plane).
   void limitOutside(double m) {
