@@ -5,13 +5,17 @@
 // and mean step time (ms), each stage's mean (ms), the columns whose top cube is still on top (of
 // 100), and the label carries the state hash, which must be the same for every thread count.
 //   build/bin/asperity_pile_threads_bench   (Bullet beside it: bench_bullet pile tuned)
+//   build/bin/asperity_pile_threads_bench --threads=1,2,4,8,16   (the scaling curve)
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -96,14 +100,42 @@ void BM_Pile1000(benchmark::State& state) {
     state.SetLabel(std::string("hash ") + hash);
   }
 }
-BENCHMARK(BM_Pile1000)
-    ->Arg(1)
-    ->Arg(2)
-    ->Arg(0)
-    ->UseManualTime()
-    ->Iterations(1)
-    ->Unit(benchmark::kMillisecond);
+// The thread counts of --threads=N,N,... (0 = every core); removes the flag from argv so that
+// Google Benchmark sees only its own. Default: 1, 2 and every core.
+std::vector<int> takeThreadCounts(int& argc, char** argv) {
+  std::vector<int> counts;
+  const std::string flag = "--threads=";
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.rfind(flag, 0) != 0) continue;
+    std::stringstream list(arg.substr(flag.size()));
+    for (std::string item; std::getline(list, item, ',');) {
+      char* end = nullptr;
+      const long n = std::strtol(item.c_str(), &end, 10);
+      if (item.empty() || *end != '\0' || n < 0 || n > 1024)
+        throw std::invalid_argument("--threads: '" + item + "' is not a thread count (0..1024)");
+      counts.push_back(static_cast<int>(n));
+    }
+    std::copy(argv + i + 1, argv + argc, argv + i);
+    --argc, --i;
+  }
+  return counts.empty() ? std::vector<int>{1, 2, 0} : counts;
+}
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  try {
+    auto* bench = benchmark::RegisterBenchmark("BM_Pile1000", BM_Pile1000);
+    for (int n : takeThreadCounts(argc, argv)) bench->Arg(n);
+    bench->UseManualTime()->Iterations(1)->Unit(benchmark::kMillisecond);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "asperity_pile_threads_bench: %s\n", e.what());
+    return 2;
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
