@@ -10,6 +10,7 @@ namespace {
 struct CpuTraits {
   static std::unique_ptr<FrictionProvider> make() { return std::make_unique<CpuPatchSampler>(); }
   static double tolerance() { return 1e-5; }
+  static double tessellationTolerance() { return 1e-5; }
   static bool multipleOf4Only() { return false; }
   static double curvedCoverageTolerance() { return 0.1; }
 };

@@ -1,12 +1,15 @@
 // The OpenGL patch sampler (gl_patch_sampler.hpp): per pass, collect both surfaces' triangles of
 // every contact into one vertex buffer, render each surface into its tile (Eq. 5 in the fragment
-// shader), read the atlas back asynchronously and average the tiles (Eqs. 8 and 7).
+// shader), read the atlas back asynchronously and average the tiles (Eqs. 8 and 7). Each vertex
+// carries its tile, so one draw per material renders every contact: per-draw state changes, not
+// the GPU, bounded the pass on a real GPU.
 #include "asperity/sampler/gl_patch_sampler.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "asperity/error.hpp"
@@ -24,18 +27,32 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The clip distances of patch.vert.glsl that keep each triangle inside its tile.
+constexpr int kTileClipPlanes = 4;
+
 double msSince(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
-// One draw: a run of triangles of one surface of one contact with one material.
+// A run of triangles of one surface of one contact with one material.
 struct Draw {
-  int tile = 0;
-  float side = 1.0f;
-  float half_depth = 1.0f;
   GLuint map = 0, mask = 0;
   GLint first = 0;
   GLsizei count = 0;
+};
+
+// Per vertex beside PatchVertex: its tile's lower-left corner (atlas pixels), the side (+1
+// surface B, -1 surface A) and the contact's half depth (patch.vert.glsl's a_tile).
+struct TileVertex {
+  float origin[2];
+  float side;
+  float half_depth;
+};
+
+// The draws of one material, rendered by one glMultiDrawArrays.
+struct Batch {
+  GLuint map = 0, mask = 0;
+  size_t first = 0, count = 0;  // into Impl::firsts and Impl::counts
 };
 
 // What the averaging needs per contact of a pass.
@@ -49,6 +66,7 @@ struct SavedState {
   GLint draw_fbo = 0, read_fbo = 0, program = 0, vao = 0, array_buffer = 0, active_texture = 0;
   GLint viewport[4] = {0, 0, 0, 0};
   GLboolean depth_test = GL_FALSE, cull_face = GL_FALSE, blend = GL_FALSE;
+  GLboolean clip[kTileClipPlanes] = {};
   GLint depth_func = GL_LESS;
 
   static SavedState capture() {
@@ -64,6 +82,7 @@ struct SavedState {
     s.depth_test = glIsEnabled(GL_DEPTH_TEST);
     s.cull_face = glIsEnabled(GL_CULL_FACE);
     s.blend = glIsEnabled(GL_BLEND);
+    for (int i = 0; i < kTileClipPlanes; ++i) s.clip[i] = glIsEnabled(GL_CLIP_DISTANCE0 + i);
     return s;
   }
   void restore() const {
@@ -79,6 +98,7 @@ struct SavedState {
     set(GL_DEPTH_TEST, depth_test);
     set(GL_CULL_FACE, cull_face);
     set(GL_BLEND, blend);
+    for (int i = 0; i < kTileClipPlanes; ++i) set(GL_CLIP_DISTANCE0 + i, clip[i]);
   }
 };
 
@@ -93,11 +113,17 @@ struct GlPatchSampler::Impl {
   glpatch::TextureCache textures;
   glpatch::Programs programs;
   std::unique_ptr<gl::VertexArray> vao;
-  std::unique_ptr<gl::Buffer> vbo;
+  std::unique_ptr<gl::Buffer> vbo, tile_vbo;
   patch::MeshCache meshes;
   patch::GeometryScratch scratch;
   std::vector<patch::PatchVertex> vertices;
+  std::vector<TileVertex> tile_vertices;
   std::vector<Draw> draws;
+  // The draws grouped by material (batch), each batch's runs in firsts and counts.
+  std::vector<size_t> order;
+  std::vector<Batch> batches;
+  std::vector<GLint> firsts;
+  std::vector<GLsizei> counts;
   int max_draw_buffers = 8;
   double patch_ms = 0.0, averaging_ms = 0.0;
   int passes = 0;
@@ -121,14 +147,17 @@ struct GlPatchSampler::Impl {
   void abandon();
   void collect(std::span<const Body> bodies, std::span<Contact* const> contacts,
                const FrictionSettings& settings, std::vector<PassContact>& out);
+  void batchByMaterial();
   void render(const FrictionSettings& settings);
   void average(int slot, const FrictionSettings& settings);
 };
 
 void GlPatchSampler::Impl::setupVertexArray() {
-  // Interleaved PatchVertex: position, uv, tangent, bitangent, normal, the three edge tests.
+  // Interleaved PatchVertex: position, uv, tangent, bitangent, normal, the three edge tests;
+  // then TileVertex from its own buffer.
   vao = std::make_unique<gl::VertexArray>();
   vbo = std::make_unique<gl::Buffer>();
+  tile_vbo = std::make_unique<gl::Buffer>();
   glBindVertexArray(*vao);
   glBindBuffer(GL_ARRAY_BUFFER, *vbo);
   const auto stride = static_cast<GLsizei>(sizeof(patch::PatchVertex));
@@ -149,6 +178,9 @@ void GlPatchSampler::Impl::setupVertexArray() {
     glVertexAttribPointer(a.index, a.size, GL_FLOAT, GL_FALSE, stride,
                           reinterpret_cast<const void*>(a.offset));
   }
+  glBindBuffer(GL_ARRAY_BUFFER, *tile_vbo);
+  glEnableVertexAttribArray(8);
+  glVertexAttribPointer(8, 4, GL_FLOAT, GL_FALSE, sizeof(TileVertex), nullptr);
   glBindVertexArray(0);
 }
 
@@ -156,8 +188,10 @@ void GlPatchSampler::Impl::collect(std::span<const Body> bodies, std::span<Conta
                                    const FrictionSettings& settings,
                                    std::vector<PassContact>& out) {
   vertices.clear();
+  tile_vertices.clear();
   draws.clear();
   out.clear();
+  const int r = settings.patch_resolution, per_row = atlas.size() / r;
   // Contact c of the pass: A in tile 2c, B in tile 2c + 1; one draw per shape with triangles.
   for (size_t c = 0; c < contacts.size(); ++c) {
     Contact& contact = *contacts[c];
@@ -172,10 +206,13 @@ void GlPatchSampler::Impl::collect(std::span<const Body> bodies, std::span<Conta
         patch::collectTriangles(volume, shape, patch::shapePose(*range.body, k),
                                 s == 0 ? Side::A : Side::B, meshes, scratch, vertices);
         if (vertices.size() == first) continue;
+        const int tile = static_cast<int>(2 * c) + s;
+        const TileVertex tv{
+            {static_cast<float>((tile % per_row) * r), static_cast<float>((tile / per_row) * r)},
+            s == 0 ? -1.0f : 1.0f,
+            static_cast<float>(volume.half_depth)};
+        tile_vertices.resize(vertices.size(), tv);
         Draw d;
-        d.tile = static_cast<int>(2 * c) + s;
-        d.side = s == 0 ? -1.0f : 1.0f;
-        d.half_depth = static_cast<float>(volume.half_depth);
         const auto& map = shape.surface.normal_map;
         d.map = map && !map->empty() ? textures.normalMap(map) : 0;
         d.mask = shape.surface.mask ? textures.mask(shape.surface.mask) : 0;
@@ -188,21 +225,44 @@ void GlPatchSampler::Impl::collect(std::span<const Body> bodies, std::span<Conta
   }
 }
 
+void GlPatchSampler::Impl::batchByMaterial() {
+  // Stable: a tile's draws keep their order, which decides exact depth ties.
+  order.resize(draws.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return std::pair(draws[a].map, draws[a].mask) < std::pair(draws[b].map, draws[b].mask);
+  });
+  batches.clear();
+  firsts.clear();
+  counts.clear();
+  for (size_t i : order) {
+    const Draw& d = draws[i];
+    if (batches.empty() || batches.back().map != d.map || batches.back().mask != d.mask)
+      batches.push_back({d.map, d.mask, firsts.size(), 0});
+    firsts.push_back(d.first);
+    counts.push_back(d.count);
+    ++batches.back().count;
+  }
+}
+
 void GlPatchSampler::Impl::render(const FrictionSettings& settings) {
-  // Upload this pass's triangles.
+  // Upload this pass's triangles and their tiles.
   glBindVertexArray(*vao);
   glBindBuffer(GL_ARRAY_BUFFER, *vbo);
   glBufferData(GL_ARRAY_BUFFER,
                static_cast<GLsizeiptr>(vertices.size() * sizeof(patch::PatchVertex)),
                vertices.data(), GL_STREAM_DRAW);
+  glBindBuffer(GL_ARRAY_BUFFER, *tile_vbo);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tile_vertices.size() * sizeof(TileVertex)),
+               tile_vertices.data(), GL_STREAM_DRAW);
+  batchByMaterial();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);  // back faces are already discarded (patch_triangles)
   glDisable(GL_BLEND);
-  const int r = settings.patch_resolution;
-  const int per_row = atlas.size() / r;
+  for (int i = 0; i < kTileClipPlanes; ++i) glEnable(GL_CLIP_DISTANCE0 + i);
   const std::vector<Vec2> dirs = sampleDirections(settings.directions);
-  // Each sub-pass renders every draw with its share of the direction groups.
+  // Each sub-pass renders every batch with its share of the direction groups.
   for (int s = 0; s < atlas.subPasses(); ++s) {
     const int first_group = s * atlas.groupsPerPass();
     const int groups = std::min(atlas.groupsPerPass(), atlas.groups() - first_group);
@@ -217,29 +277,26 @@ void GlPatchSampler::Impl::render(const FrictionSettings& settings) {
     }
     glUniform2fv(program.location("u_directions"), 4 * groups, d.data());
     program.set("u_half_width", static_cast<float>(0.5 * settings.patch_width));
-    program.set("u_pixel", static_cast<float>(settings.patch_width / r));
+    program.set("u_pixel", static_cast<float>(settings.patch_width / settings.patch_resolution));
+    program.set("u_tile_pixels", static_cast<float>(settings.patch_resolution));
+    program.set("u_atlas_pixels", static_cast<float>(atlas.size()));
     program.set("u_mu_max", settings.mu_max);
     program.set("u_scale", atlas.floatTargets() ? 1.0f : 1.0f / settings.mu_max);
     program.set("u_normal_map", 0);
     program.set("u_mask", 1);
-    atlas.beginSubPass(s);
-    for (const Draw& draw : draws) {
-      // The tile is the viewport; the depth clip depends on the contact's phi.
-      const int x0 = (draw.tile % per_row) * r, y0 = (draw.tile / per_row) * r;
-      glViewport(x0, y0, r, r);
-      glUniform2f(program.location("u_tile_origin"), static_cast<float>(x0),
-                  static_cast<float>(y0));
-      program.set("u_side", draw.side);
-      program.set("u_half_depth", draw.half_depth);
-      program.set("u_has_map", draw.map != 0 ? 1 : 0);
-      program.set("u_has_mask", draw.mask != 0 ? 1 : 0);
+    atlas.beginSubPass(s);  // the whole atlas is the viewport
+    for (const Batch& batch : batches) {
+      program.set("u_has_map", batch.map != 0 ? 1 : 0);
+      program.set("u_has_mask", batch.mask != 0 ? 1 : 0);
       glActiveTexture(GL_TEXTURE0);
-      glBindTexture(GL_TEXTURE_2D, draw.map);
+      glBindTexture(GL_TEXTURE_2D, batch.map);
       glActiveTexture(GL_TEXTURE1);
-      glBindTexture(GL_TEXTURE_2D, draw.mask);
-      glDrawArrays(GL_TRIANGLES, draw.first, draw.count);
+      glBindTexture(GL_TEXTURE_2D, batch.mask);
+      glMultiDrawArrays(GL_TRIANGLES, firsts.data() + batch.first, counts.data() + batch.first,
+                        static_cast<GLsizei>(batch.count));
     }
   }
+  for (int i = 0; i < kTileClipPlanes; ++i) glDisable(GL_CLIP_DISTANCE0 + i);
   glBindVertexArray(0);
   gl::checkGlError("gl sampler render");
 }

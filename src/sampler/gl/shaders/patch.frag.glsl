@@ -10,17 +10,17 @@ in vec3 v_normal;
 flat in vec4 v_edge0;
 flat in vec4 v_edge1;
 flat in vec4 v_edge2;
+flat in vec2 v_tile_origin;  // the tile's lower-left corner in the atlas (window pixels)
+flat in float v_side;
 
 uniform sampler2D u_normal_map;
 uniform sampler2D u_mask;
 uniform bool u_has_map;
 uniform bool u_has_mask;
-uniform float u_side;
 uniform float u_mu_max;
 uniform float u_scale;
 uniform float u_half_width;
 uniform float u_pixel;
-uniform vec2 u_tile_origin;  // the tile's lower-left corner in the atlas (window pixels)
 uniform vec2 u_directions[28];  // this pass's directions, GROUPS x 4 used
 
 layout(location = 0) out vec4 o_coverage;
@@ -60,14 +60,14 @@ bool insideEdge(vec4 e, vec2 p) {
 void main() {
   // The pixel centre in the contact frame: the source triangle's edges decide coverage there,
   // not the rasteriser's snapped vertices (a centre within 1/256 pixel of an edge).
-  vec2 centre = (gl_FragCoord.xy - u_tile_origin) * u_pixel - vec2(u_half_width);
+  vec2 centre = (gl_FragCoord.xy - v_tile_origin) * u_pixel - vec2(u_half_width);
   if (!insideEdge(v_edge0, centre) || !insideEdge(v_edge1, centre) ||
       !insideEdge(v_edge2, centre)) {
     discard;
   }
   vec3 m_tangent = u_has_map ? texture(u_normal_map, v_uv).xyz : vec3(0.0, 0.0, 1.0);
   vec3 m = v_tangent * m_tangent.x + v_bitangent * m_tangent.y + v_normal * m_tangent.z;
-  vec2 g = ploughingVector(m, u_side, u_mu_max);
+  vec2 g = ploughingVector(m, v_side, u_mu_max);
   float gain = u_has_mask ? max(texture(u_mask, v_uv).r, 0.0) : 1.0;
   o_coverage = vec4(1.0);
   o_mu0 = group(g, gain, 0);
