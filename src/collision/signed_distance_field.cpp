@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <map>
 #include <string>
 #include <utility>
@@ -214,23 +215,34 @@ void SignedDistanceField::countCrossings(const TriangleMeshData& mesh,
 }
 
 void SignedDistanceField::sweep(const TriangleMeshData& mesh, int di, int dj, int dk) {
-  // Each node tries the closest triangles of its seven upwind neighbours.
+  // Each node tries the closest triangles of its seven upwind neighbours, each distinct one
+  // once (neighbours often share one; a second try could not lower the node's distance).
   const int i_begin = di > 0 ? 1 : n_[0] - 2, i_end = di > 0 ? n_[0] : -1;
   const int j_begin = dj > 0 ? 1 : n_[1] - 2, j_end = dj > 0 ? n_[1] : -1;
   const int k_begin = dk > 0 ? 1 : n_[2] - 2, k_end = dk > 0 ? n_[2] : -1;
+  const std::ptrdiff_t row = n_[0], slice = static_cast<std::ptrdiff_t>(n_[0]) * n_[1];
+  std::ptrdiff_t upwind[7];
+  for (int m = 1; m < 8; ++m) {
+    upwind[m - 1] = -((m & 1) ? di : 0) - ((m & 2) ? dj * row : 0) - ((m & 4) ? dk * slice : 0);
+  }
   for (int k = k_begin; k != k_end; k += dk) {
     for (int j = j_begin; j != j_end; j += dj) {
-      for (int i = i_begin; i != i_end; i += di) {
-        const size_t n = index(i, j, k);
+      auto n = static_cast<std::ptrdiff_t>(index(i_begin, j, k));
+      for (int i = i_begin; i != i_end; i += di, n += di) {
         const Vec3 x = node(i, j, k);
-        for (int m = 1; m < 8; ++m) {
-          const size_t nb =
-              index(i - ((m & 1) ? di : 0), j - ((m & 2) ? dj : 0), k - ((m & 4) ? dk : 0));
-          const int t = closest_[nb];
-          if (t < 0 || t == closest_[n]) continue;
+        int own = closest_[static_cast<size_t>(n)];
+        double best = phi_[static_cast<size_t>(n)];
+        int tried[7], tried_count = 0;
+        for (const std::ptrdiff_t offset : upwind) {
+          const int t = closest_[static_cast<size_t>(n + offset)];
+          if (t < 0 || t == own || std::find(tried, tried + tried_count, t) != tried + tried_count)
+            continue;
+          tried[tried_count++] = t;
           const double d = triangleDistance(x, mesh, t);
-          if (d < phi_[n]) phi_[n] = d, closest_[n] = t;
+          if (d < best) best = d, own = t;
         }
+        phi_[static_cast<size_t>(n)] = best;
+        closest_[static_cast<size_t>(n)] = own;
       }
     }
   }

@@ -1,8 +1,8 @@
 // The OpenGL patch sampler (gl_patch_sampler.hpp): per pass, collect both surfaces' triangles of
 // every contact into one vertex buffer, render each surface into its tile (Eq. 5 in the fragment
 // shader), read the atlas back asynchronously and average the tiles (Eqs. 8 and 7). Each vertex
-// carries its tile, so one draw per material renders every contact: per-draw state changes, not
-// the GPU, bounded the pass on a real GPU.
+// carries its tile, so one draw per material renders every contact: under llvmpipe the state
+// changes of a draw per surface cost twice the drawing itself.
 #include "asperity/sampler/gl_patch_sampler.hpp"
 
 #include <algorithm>
