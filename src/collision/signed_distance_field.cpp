@@ -137,11 +137,12 @@ std::shared_ptr<const SignedDistanceField> SignedDistanceField::build(const Tria
   field->computeBand(mesh, 1);
   std::vector<int> crossings(count, 0);
   field->countCrossings(mesh, crossings);
+  Tried tried(count);
   for (int pass = 0; pass < 2; ++pass) {
-    field->sweep(mesh, +1, +1, +1), field->sweep(mesh, -1, -1, -1);
-    field->sweep(mesh, +1, +1, -1), field->sweep(mesh, -1, -1, +1);
-    field->sweep(mesh, +1, -1, +1), field->sweep(mesh, -1, +1, -1);
-    field->sweep(mesh, +1, -1, -1), field->sweep(mesh, -1, +1, +1);
+    field->sweep(mesh, tried, +1, +1, +1), field->sweep(mesh, tried, -1, -1, -1);
+    field->sweep(mesh, tried, +1, +1, -1), field->sweep(mesh, tried, -1, -1, +1);
+    field->sweep(mesh, tried, +1, -1, +1), field->sweep(mesh, tried, -1, +1, -1);
+    field->sweep(mesh, tried, +1, -1, -1), field->sweep(mesh, tried, -1, +1, +1);
   }
   field->applySigns(crossings);
   return field;
@@ -214,9 +215,13 @@ void SignedDistanceField::countCrossings(const TriangleMeshData& mesh,
   }
 }
 
-void SignedDistanceField::sweep(const TriangleMeshData& mesh, int di, int dj, int dk) {
-  // Each node tries the closest triangles of its seven upwind neighbours, each distinct one
-  // once (neighbours often share one; a second try could not lower the node's distance).
+SignedDistanceField::Tried::Tried(size_t nodes) : ids_(nodes * kPerNode, -1), next_(nodes, 0) {}
+
+void SignedDistanceField::sweep(const TriangleMeshData& mesh, Tried& tried, int di, int dj,
+                                int dk) {
+  // Each node tries the closest triangles of its seven upwind neighbours, skipping those it
+  // tried lately, in this sweep or an earlier one: phi only falls, so a second try of a
+  // triangle cannot lower it (neighbours often share a triangle, and sweeps meet the same ones).
   const int i_begin = di > 0 ? 1 : n_[0] - 2, i_end = di > 0 ? n_[0] : -1;
   const int j_begin = dj > 0 ? 1 : n_[1] - 2, j_end = dj > 0 ? n_[1] : -1;
   const int k_begin = dk > 0 ? 1 : n_[2] - 2, k_end = dk > 0 ? n_[2] : -1;
@@ -232,12 +237,9 @@ void SignedDistanceField::sweep(const TriangleMeshData& mesh, int di, int dj, in
         const Vec3 x = node(i, j, k);
         int own = closest_[static_cast<size_t>(n)];
         double best = phi_[static_cast<size_t>(n)];
-        int tried[7], tried_count = 0;
         for (const std::ptrdiff_t offset : upwind) {
           const int t = closest_[static_cast<size_t>(n + offset)];
-          if (t < 0 || t == own || std::find(tried, tried + tried_count, t) != tried + tried_count)
-            continue;
-          tried[tried_count++] = t;
+          if (t < 0 || t == own || !tried.insert(static_cast<size_t>(n), t)) continue;
           const double d = triangleDistance(x, mesh, t);
           if (d < best) best = d, own = t;
         }

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -55,7 +56,26 @@ class SignedDistanceField {
   }
   void computeBand(const TriangleMeshData& mesh, int band);
   void countCrossings(const TriangleMeshData& mesh, std::vector<int>& crossings) const;
-  void sweep(const TriangleMeshData& mesh, int di, int dj, int dk);
+  // The triangles each node tried lately in the sweeps (a ring of kPerNode ids per node).
+  class Tried {
+   public:
+    explicit Tried(size_t nodes);
+    // False when the node tried the triangle lately; else remembers it.
+    bool insert(size_t node, int triangle) {
+      int* ids = &ids_[node * kPerNode];
+      for (size_t k = 0; k < kPerNode; ++k)
+        if (ids[k] == triangle) return false;
+      ids[next_[node]] = triangle;
+      next_[node] = static_cast<uint8_t>((next_[node] + 1) % kPerNode);
+      return true;
+    }
+
+   private:
+    static constexpr size_t kPerNode = 4;
+    std::vector<int> ids_;
+    std::vector<uint8_t> next_;
+  };
+  void sweep(const TriangleMeshData& mesh, Tried& tried, int di, int dj, int dk);
   void applySigns(const std::vector<int>& crossings);
   Vec3 node(int i, int j, int k) const;
 
