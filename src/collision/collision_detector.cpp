@@ -312,12 +312,43 @@ struct CollisionDetector::Impl {
     if (pair.m_algorithm) deferred.push_back(&pair);
   }
 
+  // Bullet's step (AABBs, broadphase, its walk over the pairs with nearCallback). On several
+  // threads the walk is ours, over the same pair array in the same order: a box pair that has
+  // its algorithm already (a pile's pairs, step after step) is only listed for
+  // processDeferred, which tests and collides it on the pool; the calling thread then spends a
+  // few instructions on it instead of nearCallback's tests of every other kind of pair.
+  void detectPairs() {
+    if (!workers || pair_manifolds.size() == 1) {
+      world->performDiscreteCollisionDetection();
+      return;
+    }
+    world->updateAabbs();
+    world->computeOverlappingPairs();
+    btBroadphasePairArray& pairs = world->getPairCache()->getOverlappingPairArray();
+    const btDispatcherInfo& info = world->getDispatchInfo();
+    for (int i = 0; i < pairs.size(); ++i) {
+      btBroadphasePair& pair = pairs[i];
+      const int r0 =
+          static_cast<btCollisionObject*>(pair.m_pProxy0->m_clientObject)->getUserIndex();
+      const int r1 =
+          static_cast<btCollisionObject*>(pair.m_pProxy1->m_clientObject)->getUserIndex();
+      if (!isBoxPair(r0, r1)) {
+        nearCallback(pair, *dispatcher, info);
+      } else if (pair.m_algorithm) {
+        deferred.push_back(&pair);  // needsCollision is asked on the pool
+      } else {
+        deferBoxPair(pair, *dispatcher);
+      }
+    }
+  }
+
   void processDeferred() {
     const btDispatcherInfo& info = world->getDispatchInfo();
     workers->forEach(deferred.size(), 16, [&](size_t k) {
       btBroadphasePair& pair = *deferred[k];
       auto* o0 = static_cast<btCollisionObject*>(pair.m_pProxy0->m_clientObject);
       auto* o1 = static_cast<btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+      if (!dispatcher->needsCollision(o0, o1)) return;  // read-only: safe on any thread
       if (pair_manifolds.size() > 1 &&
           idleBoxPair(pair, o0->getUserIndex(), o1->getUserIndex(),
                       pair_manifolds[static_cast<size_t>(workers->slot())].list)) {
@@ -825,7 +856,7 @@ void CollisionDetector::Impl::collect(std::span<const Body> bodies, const Thread
     pair_manifolds.back().list.reserve(4);
   }
   pair_manifolds.resize(slots);
-  if (world) world->performDiscreteCollisionDetection();
+  if (world) detectPairs();
   if (!deferred.empty()) processDeferred();
   if (dispatcher) collectManifolds();
   collectPlanes();
