@@ -31,9 +31,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 #include "asperity/error.hpp"
@@ -48,6 +50,9 @@
 #include "parallel/thread_pool.hpp"
 
 namespace asperity {
+
+// collectManifolds makes contacts anew in slots that held others (std::construct_at).
+static_assert(std::is_trivially_destructible_v<Contact>);
 
 using namespace collision_detail;
 
@@ -168,20 +173,34 @@ struct CollisionDetector::Impl {
   std::vector<std::pair<BodyId, BodyId>> touching_pairs;      // scratch of collectSwept
   std::vector<SweepHit> sweep_hits;                           // scratch of collectSwept
   std::vector<std::pair<int, int>> sdf_pairs;
-  std::vector<Contact> contacts;               // this call's contacts in the order found
+  // This call's contacts in the order found: contacts[0, manifold_base), then the kept points
+  // of manifold_contacts[0, manifold_slots), then contacts[manifold_base, end) (found()).
+  std::vector<Contact> contacts;
   std::vector<CylinderSidePoint> side_points;  // scratch of collectCylinderSide
   std::vector<Contact> sorted;                 // detect's result when the caller gives no vector
+  // Manifold points' contacts, one slot each, reset and filled on the pool. The buffer only
+  // grows: making 4000 default contacts (2 MB) anew on the calling thread every step cost as
+  // much as a quarter of the pile's whole collision stage on two threads.
+  std::vector<Contact> manifold_contacts;
+  size_t manifold_base = 0, manifold_slots = 0;
+  // What sorting needs of a contact found, in the order found; a manifold slot's entry is
+  // written beside its contact, on the pool.
+  struct Found {
+    BodyId a, b;
+    uint64_t key;
+    const Contact* contact;
+    bool kept;  // a manifold's gap point is dropped unless gaps are reported
+  };
+  std::vector<Found> manifold_found, found;
   struct SortKey {
     BodyId b;
     uint64_t key;
-    uint32_t index;
+    uint32_t index;  // into found
   };
   std::vector<SortKey> order;
   std::vector<size_t> bucket_start;  // per body_a, for sortInto
-  // Per manifold (collectManifolds), then summed: its first point's slot, its first new id;
-  // and whether it reported a gap.
+  // Per manifold (collectManifolds), then summed: its first point's slot, its first new id.
   std::vector<size_t> manifold_first, manifold_new;
-  std::vector<uint8_t> manifold_gap;
   // Per worker slot: the nearest-triangle search's buffers, all grown to the largest.
   std::vector<collision_detail::NearestScratch> nearest_scratch;
   // This call's worker threads (null: the calling thread only), and the box-box pairs whose
@@ -407,13 +426,14 @@ struct CollisionDetector::Impl {
   // and each contact is copied once (sorting whole contacts, several hundred bytes each, with
   // a comparison sort cost more per contact as the pile grew).
   void sortInto(std::vector<Contact>& out) {
+    gatherFound();
     bucket_start.assign(body_types.size() + 1, 0);
-    for (const Contact& c : contacts) ++bucket_start[c.body_a + 1];
+    for (const Found& f : found) ++bucket_start[f.a + 1];
     for (size_t b = 1; b < bucket_start.size(); ++b) bucket_start[b] += bucket_start[b - 1];
-    order.resize(contacts.size());
-    for (size_t i = 0; i < contacts.size(); ++i) {
-      const Contact& c = contacts[i];
-      order[bucket_start[c.body_a]++] = SortKey{c.body_b, c.key, static_cast<uint32_t>(i)};
+    order.resize(found.size());
+    for (size_t i = 0; i < found.size(); ++i) {
+      const Found& f = found[i];
+      order[bucket_start[f.a]++] = SortKey{f.b, f.key, static_cast<uint32_t>(i)};
     }
     // bucket_start[b] now ends bucket b; bucket b begins where bucket b - 1 ends. Small
     // buckets by insertion, a body with many contacts by a comparison sort.
@@ -435,8 +455,20 @@ struct CollisionDetector::Impl {
       }
       begin = end;
     }
-    out.resize(contacts.size());
-    forEachOn(workers, order.size(), 256, [&](size_t i) { out[i] = contacts[order[i].index]; });
+    out.resize(found.size());
+    forEachOn(workers, order.size(), 256,
+              [&](size_t i) { out[i] = *found[order[i].index].contact; });
+  }
+
+  static Found foundOf(const Contact& c) { return {c.body_a, c.body_b, c.key, &c, true}; }
+
+  // found: every contact of this call in the order found (see contacts).
+  void gatherFound() {
+    found.clear();
+    for (size_t i = 0; i < manifold_base; ++i) found.push_back(foundOf(contacts[i]));
+    for (size_t s = 0; s < manifold_slots; ++s)
+      if (manifold_found[s].kept) found.push_back(manifold_found[s]);
+    for (size_t i = manifold_base; i < contacts.size(); ++i) found.push_back(foundOf(contacts[i]));
   }
 
   void collect(std::span<const Body> bodies, const ThreadPool* pool);
@@ -551,11 +583,14 @@ void CollisionDetector::Impl::collectManifolds() {
   // Then every manifold on the pool: its new points numbered in order (the ids a serial pass
   // in manifold order would give, on any thread count; Bullet keeps them while a point is
   // matched), and its points converted into its own slots (new, default Contacts).
-  const size_t base = contacts.size();
+  manifold_base = contacts.size();
+  manifold_slots = manifold_first[manifolds];
   const uint64_t first_id = next_point_id;
   next_point_id += manifold_new[manifolds];
-  contacts.resize(base + manifold_first[manifolds]);
-  manifold_gap.assign(manifolds, 0);
+  if (manifold_contacts.size() < manifold_slots) {
+    manifold_contacts.resize(manifold_slots);
+    manifold_found.resize(manifold_slots);
+  }
   nearest_scratch.resize(workers ? static_cast<size_t>(workers->concurrency()) : 1);
   const auto convert = [&](size_t m) {
     btPersistentManifold* mf = manifold(m);
@@ -567,11 +602,13 @@ void CollisionDetector::Impl::collectManifolds() {
       btManifoldPoint& pt = mf->getContactPoint(p);
       if (!pt.m_userPersistentData)
         pt.m_userPersistentData = reinterpret_cast<void*>(static_cast<uintptr_t>(id++));
-      Contact& c = contacts[base + manifold_first[m] + static_cast<size_t>(p)];
+      const size_t slot = manifold_first[m] + static_cast<size_t>(p);
+      Contact& c = *std::construct_at(&manifold_contacts[slot]);  // a default Contact again
       manifoldContact(pt, r0, r1, nearest, c);
       c.key = contactKey(
           c, static_cast<uint64_t>(reinterpret_cast<uintptr_t>(pt.m_userPersistentData)));
-      manifold_gap[m] |= static_cast<uint8_t>(c.phi < 0);
+      manifold_found[slot] = foundOf(c);
+      manifold_found[slot].kept = settings.report_gaps || c.phi >= 0;
     }
   };
   forEachOn(workers, manifolds, 32, convert);
@@ -579,12 +616,6 @@ void CollisionDetector::Impl::collectManifolds() {
   for (auto& scratch : nearest_scratch) {
     for (const auto& other : nearest_scratch) scratch.reserveLike(other);
   }
-  // Gaps out unless reported, in order (a pass over every contact only when there are some).
-  const bool gaps = std::find(manifold_gap.begin(), manifold_gap.end(), 1) != manifold_gap.end();
-  if (gaps && !settings.report_gaps)
-    contacts.erase(std::remove_if(contacts.begin() + static_cast<std::ptrdiff_t>(base),
-                                  contacts.end(), [](const Contact& c) { return c.phi < 0; }),
-                   contacts.end());
 }
 
 void CollisionDetector::Impl::manifoldContact(const btManifoldPoint& pt, const ShapeRecord& r0,
@@ -725,7 +756,8 @@ void CollisionDetector::Impl::collectSwept() {
     if (displacement.norm() <= 0.25 * r.size) continue;
     if (!gathered) {
       touching.clear();
-      for (const Contact& c : contacts) touching.emplace_back(c.body_a, c.body_b);
+      gatherFound();
+      for (const Found& f : found) touching.emplace_back(f.a, f.b);
       std::sort(touching.begin(), touching.end());
       gathered = true;
     }
@@ -836,16 +868,19 @@ void CollisionDetector::Impl::collect(std::span<const Body> bodies, const Thread
     throw Error("collision: detect got " + std::to_string(bodies.size()) +
                 " bodies, setBodies had " + std::to_string(body_types.size()));
   }
-  // Poses of this call, in double for the contact geometry and in float for Bullet.
-  for (ShapeRecord& rec : records) {
+  // Poses of this call, in double for the contact geometry and in float for Bullet; each
+  // record (and its own Bullet object) on its own.
+  forEachOn(pool, records.size(), 128, [&](size_t i) {
+    ShapeRecord& rec = records[i];
     const Body& body = bodies[rec.body];
     rec.world = body.pose * rec.shape.local;
     if (rec.shape.type == ShapeType::Box) rec.axes = rec.world.rotation.toRotationMatrix();
     rec.object->setWorldTransform(toBt(rec.world, scale));
     rec.velocity = body.pointVelocity(rec.world.position);
     rec.angular_speed = body.angular_velocity.norm();
-  }
+  });
   contacts.clear();
+  manifold_base = manifold_slots = 0;
   plane_pairs.clear();
   sdf_pairs.clear();
   workers = pool;
