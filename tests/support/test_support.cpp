@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <system_error>
+#include <vector>
 
 namespace asperity::test {
 
@@ -32,6 +34,38 @@ std::string slurp(const std::string& path) {
   ss << in.rdbuf();
   return ss.str();
 }
+
+// The folders tempDir makes: a test's are removed when it passes, those made outside a test
+// (suite set-ups) when the whole run passes; failures keep theirs to look into. So runs of
+// the suite do not pile up files in the temporary folder.
+class TempDirCleaner : public ::testing::EmptyTestEventListener {
+ public:
+  void add(const std::filesystem::path& dir, bool in_test) {
+    (in_test ? test_dirs_ : run_dirs_).push_back(dir);
+  }
+
+ private:
+  void OnTestEnd(const ::testing::TestInfo& info) override {
+    removeIf(info.result() != nullptr && info.result()->Passed(), test_dirs_);
+  }
+  void OnTestProgramEnd(const ::testing::UnitTest& unit) override {
+    removeIf(unit.Passed(), run_dirs_);
+  }
+  static void removeIf(bool passed, std::vector<std::filesystem::path>& dirs) {
+    std::error_code ignored;
+    if (passed)
+      for (const auto& dir : dirs) std::filesystem::remove_all(dir, ignored);
+    dirs.clear();
+  }
+  std::vector<std::filesystem::path> test_dirs_, run_dirs_;
+};
+
+// Appended before main runs; GoogleTest owns and deletes it.
+TempDirCleaner* const cleaner = [] {
+  auto* c = new TempDirCleaner;
+  ::testing::UnitTest::GetInstance()->listeners().Append(c);
+  return c;
+}();
 }  // namespace
 
 CommandResult runCli(const std::vector<std::string>& args) {
@@ -59,6 +93,7 @@ std::string tempDir(const std::string& tag) {
       (name + "." + tag + "." + std::to_string(::getpid()) + "." + std::to_string(counter++));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  cleaner->add(dir, info != nullptr);
   return dir.string();
 }
 

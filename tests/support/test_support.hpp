@@ -35,7 +35,8 @@ struct CommandResult {
 // Runs build/bin/asperity with the given arguments (each is shell-quoted).
 CommandResult runCli(const std::vector<std::string>& args);
 
-// A fresh, empty temporary directory for one test; removed by the OS, not by the test.
+// A fresh, empty temporary directory for one test; removed when the test passes (kept when it
+// fails), or, made outside a test, when the whole run passes.
 std::string tempDir(const std::string& tag);
 
 // Path of a file in the repository.
