@@ -69,11 +69,8 @@ bool faceMissesVolume(const Volume& volume, const Vec3& c, const Vec3& et, const
   const Vec3 reach = et.cwiseAbs() + eb.cwiseAbs();
   const double side = 0.5 * volume.width + volume.pixel;
   if (std::abs(c.x()) - reach.x() > side || std::abs(c.y()) - reach.y() > side) return true;
-  const double depth = volume.half_depth + 1e-9 * volume.width;
-  const double zmin = c.z() - reach.z(), zmax = c.z() + reach.z();
-  if (!(zmin > depth || zmax < -depth)) return false;
-  raster.depth.noteRange(zmin, zmax, volume.half_depth);
-  return true;
+  return raster.depth.rejectsRange(c.z() - reach.z(), c.z() + reach.z(), volume.half_depth,
+                                   1e-9 * volume.width);
 }
 
 // Whether a bounding sphere of radius `reach` about the shape's origin misses the volume (a
@@ -82,10 +79,7 @@ bool sphereMissesVolume(const Volume& volume, const Placement& pl, double reach,
                         SurfaceRaster& raster) {
   const double half = 0.5 * volume.width;
   if (std::abs(pl.o.x()) > reach + half || std::abs(pl.o.y()) > reach + half) return true;
-  const double h = volume.half_depth, zmin = pl.o.z() - reach, zmax = pl.o.z() + reach;
-  if (!(zmin > h || zmax < -h)) return false;
-  raster.depth.noteRange(zmin, zmax, h);
-  return true;
+  return raster.depth.rejectsRange(pl.o.z() - reach, pl.o.z() + reach, volume.half_depth);
 }
 
 void rasteriseBox(const Volume& volume, const Shape& shape, const Placement& pl,

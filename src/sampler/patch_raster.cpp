@@ -177,10 +177,7 @@ bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool 
     ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
   }
   const double h = volume.half_depth;
-  if (zmin > h || zmax < -h) {
-    depth.noteRange(zmin, zmax, h);
-    return false;
-  }
+  if (depth.rejectsRange(zmin, zmax, h)) return false;
   pixelRange(volume, xmin, xmax, out.i0, out.i1);
   pixelRange(volume, ymin, ymax, out.j0, out.j1);
   if (out.i0 > out.i1 || out.j0 > out.j1) return false;

@@ -116,6 +116,13 @@ struct DepthMargins {
     note(zmin, h);
     note(zmax, h);
   }
+  // Whether a whole primitive, its fragments at depths in [zmin, zmax], lies beyond the clip
+  // widened by `slack`: then it is rejected, a decision noted here.
+  bool rejectsRange(double zmin, double zmax, double h, double slack = 0.0) {
+    if (!(zmin > h + slack || zmax < -h - slack)) return false;
+    noteRange(zmin, zmax, h);
+    return true;
+  }
   // A fragment beyond the clip may move in by no more than `m` (either plane).
   void limitOutside(double m) {
     out_top = std::min(out_top, m);

@@ -8,10 +8,9 @@
 // and the point + w/2 b in both bodies' frames, and phi. Along the normal a sample also holds
 // while no fragment can have crossed the depth clip, when the sampler gives the margins of its
 // clip decisions (DepthMargins), so that a face lying well inside the clip may rise and sink
-// by more than the fixed tolerance. Contacts
-// are matched across steps by their warm-start identity (bodies, shapes, key). The decisions
-// are made before any sampling and depend on the contacts alone, so they are the same for
-// every thread count.
+// by more than the fixed tolerance. Contacts are matched across steps by their warm-start
+// identity (bodies, shapes, key). The decisions are made before any sampling and depend on the
+// contacts alone, so they are the same for every thread count.
 #pragma once
 
 #include <array>
