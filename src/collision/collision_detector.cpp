@@ -316,12 +316,13 @@ struct CollisionDetector::Impl {
 
   // Bullet's defaultNearCallback up to the narrowphase: the pair's algorithm (and with it, for
   // two boxes, its manifold) is made here, in pair order as before; processDeferred then runs
-  // the box-box narrowphase of every such pair, each writing only its own manifold.
+  // the box-box narrowphase of every such pair, each writing only its own manifold. A pair
+  // that has its algorithm is only listed: processDeferred asks needsCollision, on the pool.
   void deferBoxPair(btBroadphasePair& pair, btCollisionDispatcher& d) {
-    auto* o0 = static_cast<btCollisionObject*>(pair.m_pProxy0->m_clientObject);
-    auto* o1 = static_cast<btCollisionObject*>(pair.m_pProxy1->m_clientObject);
-    if (!d.needsCollision(o0, o1)) return;
     if (!pair.m_algorithm) {
+      auto* o0 = static_cast<btCollisionObject*>(pair.m_pProxy0->m_clientObject);
+      auto* o1 = static_cast<btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+      if (!d.needsCollision(o0, o1)) return;
       const btCollisionObjectWrapper w0(nullptr, o0->getCollisionShape(), o0,
                                         o0->getWorldTransform(), -1, -1);
       const btCollisionObjectWrapper w1(nullptr, o1->getCollisionShape(), o1,
@@ -332,10 +333,9 @@ struct CollisionDetector::Impl {
   }
 
   // Bullet's step (AABBs, broadphase, its walk over the pairs with nearCallback). On several
-  // threads the walk is ours, over the same pair array in the same order: a box pair that has
-  // its algorithm already (a pile's pairs, step after step) is only listed for
-  // processDeferred, which tests and collides it on the pool; the calling thread then spends a
-  // few instructions on it instead of nearCallback's tests of every other kind of pair.
+  // threads the walk is ours, over the same pair array in the same order: a box pair goes
+  // straight to deferBoxPair (a pile's pairs, step after step, are only listed there), not
+  // through nearCallback's tests of every other kind of pair.
   void detectPairs() {
     if (!workers || pair_manifolds.size() == 1) {
       world->performDiscreteCollisionDetection();
@@ -351,12 +351,10 @@ struct CollisionDetector::Impl {
           static_cast<btCollisionObject*>(pair.m_pProxy0->m_clientObject)->getUserIndex();
       const int r1 =
           static_cast<btCollisionObject*>(pair.m_pProxy1->m_clientObject)->getUserIndex();
-      if (!isBoxPair(r0, r1)) {
-        nearCallback(pair, *dispatcher, info);
-      } else if (pair.m_algorithm) {
-        deferred.push_back(&pair);  // needsCollision is asked on the pool
-      } else {
+      if (isBoxPair(r0, r1)) {
         deferBoxPair(pair, *dispatcher);
+      } else {
+        nearCallback(pair, *dispatcher, info);
       }
     }
   }
