@@ -97,6 +97,8 @@ nlohmann::ordered_json statsJson(const RunOptions& opt, const SceneDesc& scene, 
   j["bodies"] = world.bodies().size();
   j["sampler"] = scene.sampler;
   j["threads"] = world.settings().threads;
+  // The collision set-up before the first step (World::prepare), once.
+  j["prepare_ms"] = sums.prepare_ms;
   // Per-step averages (ms for the stages, as StepProfile).
   nlohmann::ordered_json per_step;
   for (const auto& [name, value] : sums.means()) per_step[name] = value;

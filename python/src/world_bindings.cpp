@@ -182,6 +182,14 @@ void bindWorld(py::module_& m) {
             runSteps(*w.world, n);
           },
           py::arg("n") = 1, "Advances the world by n steps of dt (the GIL is released).")
+      .def(
+          "prepare",
+          [](PyWorld& w) {
+            py::gil_scoped_release release;
+            return w.world->prepare();
+          },
+          "Builds the collision objects and signed distance fields now rather than in the next "
+          "step; returns the ms it took (0 when nothing changed since the last build).")
       .def_property_readonly(
           "time", [](const PyWorld& w) { return w.world->time(); }, "Simulated time (s).")
       .def_property_readonly(

@@ -32,6 +32,16 @@ def test_threads_do_not_change_the_bits():
         asperity.World(str(SCENES / "stacking.json"), threads=-1)
 
 
+def test_prepare_builds_collision_once_and_changes_no_bits():
+    prepared = asperity.World(str(SCENES / "nut_bolt.json"))
+    plain = asperity.World(str(SCENES / "nut_bolt.json"))
+    assert prepared.prepare() > 0.0  # the nut's signed distance field
+    assert prepared.prepare() == 0.0
+    prepared.step(20)
+    plain.step(20)
+    assert prepared.state_hash() == plain.state_hash()
+
+
 def test_state_arrays_have_the_documented_shapes_and_dtypes():
     world = asperity.World(str(SCENES / "stacking.json"))
     b = len(world.body_names)

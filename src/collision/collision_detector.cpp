@@ -853,10 +853,12 @@ void CollisionDetector::Impl::build(std::span<const Body> bodies) {
   }
   for (ShapeRecord& rec : records) {
     world->addCollisionObject(rec.object.get());
-    // Fields of dynamic closed meshes now rather than in the first step (static ones on use).
+    // Fields and surface points of dynamic closed meshes now rather than in the first step
+    // (static ones, and the points of the shapes they meet, on first use).
     if (settings.mesh_pairs == MeshPairMode::Auto && rec.closed_mesh &&
         rec.body_type == BodyType::Dynamic) {
       sdf.field(rec);
+      sdf.samples(rec);
     }
   }
 }

@@ -80,11 +80,15 @@ SignedDistanceField::Sample primitiveSample(const Shape& shape, const Vec3& p) {
   return s;
 }
 
+namespace {
+// beyondPrimitive's margin: far above the rounding of the exact distances.
+constexpr double kGrow = 1.0 + 1e-9;
+}  // namespace
+
 bool beyondPrimitive(const Shape& shape, const Vec3& p, double reach) {
   // Squared distances against (radius + reach)^2 grown far beyond the rounding of the exact
   // distances, so that a point this calls beyond would be rejected by primitiveSample too.
   if (!(reach >= 0)) return false;
-  constexpr double kGrow = 1.0 + 1e-9;
   const auto farther = [&](double squared, double radius) {
     return squared > kGrow * (radius + reach) * (radius + reach);
   };
@@ -101,6 +105,15 @@ bool beyondPrimitive(const Shape& shape, const Vec3& p, double reach) {
     default:
       return false;  // a box's bounds already hold its points
   }
+}
+
+PrimitiveReach::PrimitiveReach(const Shape& shape, double reach) {
+  // beyondPrimitive's bounds; an invalid reach leaves every point to the exact distance.
+  if (!(reach >= 0)) return;
+  type_ = shape.type;
+  radius2_ = lanes::splat(kGrow * (shape.radius + reach) * (shape.radius + reach));
+  z_limit_ = lanes::splat(kGrow * (shape.half_height + reach));
+  half_height_ = shape.half_height;
 }
 
 }  // namespace asperity::collision_detail

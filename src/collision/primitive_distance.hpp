@@ -4,6 +4,7 @@
 
 #include "asperity/geometry/shape.hpp"
 #include "collision/signed_distance_field.hpp"
+#include "math/lanes.hpp"
 
 namespace asperity::collision_detail {
 
@@ -17,5 +18,33 @@ SignedDistanceField::Sample primitiveSample(const Shape& shape, const Vec3& p);
 // primitiveSample would give a distance of at least `reach`: a test of a few products that
 // lets a query skip the exact distance of most far points with the same outcome.
 bool beyondPrimitive(const Shape& shape, const Vec3& p, double reach);
+
+// beyondPrimitive for two points at once, one per lane, its bounds worked out once.
+class PrimitiveReach {
+ public:
+  PrimitiveReach() = default;  // nothing is beyond
+  PrimitiveReach(const Shape& shape, double reach);
+
+  lanes::Mask beyond(const lanes::Lanes3& p) const {
+    using lanes::splat;
+    switch (type_) {
+      case ShapeType::Sphere:
+        return radius2_ < p.x * p.x + p.y * p.y + p.z * p.z;
+      case ShapeType::Capsule: {
+        const lanes::Lanes dz = p.z - lanes::clamp(p.z, -half_height_, half_height_);
+        return radius2_ < p.x * p.x + p.y * p.y + dz * dz;
+      }
+      case ShapeType::Cylinder:
+        return (radius2_ < p.x * p.x + p.y * p.y) | (z_limit_ < lanes::abs(p.z));
+      default:
+        return lanes::none();
+    }
+  }
+
+ private:
+  ShapeType type_ = ShapeType::Box;  // a box (or none): its bounds already hold its points
+  lanes::Lanes radius2_{}, z_limit_{};
+  double half_height_ = 0.0;
+};
 
 }  // namespace asperity::collision_detail

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "math/lanes.hpp"
+
 namespace asperity::collision_detail {
 
 namespace {
@@ -33,14 +35,14 @@ uint32_t mortonCode(const Vec3& p, const Eigen::AlignedBox3d& all) {
 // reach. Both are grown by far more than the rounding of moving one point, so that no point
 // that the exact test would keep is skipped. `abs_rotation`: |to_field's rotation matrix|.
 bool unseenBlock(const Eigen::AlignedBox3d& box, const Transform& to_field,
-                 const Mat3& abs_rotation, const SdfQuery& query) {
+                 const Mat3& abs_rotation, const SdfQuery& query, const FieldDistance& field) {
   const Vec3 centre = to_field.apply(box.center());
   const Vec3 half = abs_rotation * (0.5 * box.sizes());
   const double pad = 1e-9 * (1.0 + centre.cwiseAbs().maxCoeff() + half.maxCoeff());
   const Vec3 reach = half.array() + pad;
   const bool misses = ((centre + reach).array() < query.bounds.min().array()).any() ||
                       ((centre - reach).array() > query.bounds.max().array()).any();
-  return misses || (query.beyond && query.beyond(centre, 0.5 * box.sizes().norm() + pad));
+  return misses || field.beyond(centre, 0.5 * box.sizes().norm() + pad);
 }
 
 }  // namespace
@@ -98,14 +100,7 @@ SurfaceSamples surfaceSamples(const TriangleMeshData& mesh, double spacing, size
   return out;
 }
 
-const std::vector<SdfHit>& sdfHits(const SignedDistanceField& field, const Transform& field_world,
-                                   std::span<const Vec3> points, const Transform& points_world,
-                                   const SdfQuery& query, SdfHitBuffers& buffers) {
-  return sdfHits([&field](const Vec3& p) { return field.sample(p); }, field_world, points,
-                 points_world, query, buffers);
-}
-
-const std::vector<SdfHit>& sdfHits(const DistanceFn& field, const Transform& field_world,
+const std::vector<SdfHit>& sdfHits(const FieldDistance& field, const Transform& field_world,
                                    std::span<const Vec3> points, const Transform& points_world,
                                    const SdfQuery& query, SdfHitBuffers& buffers,
                                    const SampleBlocks* blocks) {
@@ -113,10 +108,9 @@ const std::vector<SdfHit>& sdfHits(const DistanceFn& field, const Transform& fie
   const Transform to_field = field_world.inverse() * points_world;
   std::vector<SdfHit>& hits = buffers.hits;
   hits.clear();
-  const auto test = [&](const Vec3& point, size_t i) {
-    const Vec3 local = to_field.apply(point);
+  const auto test = [&](const Vec3& local, size_t i) {
     if (!query.bounds.contains(local)) return;
-    const SignedDistanceField::Sample s = field(local);
+    const SignedDistanceField::Sample s = field(local, query.max_distance);
     if (!s.inside_grid || s.distance >= query.max_distance) return;
     SdfHit hit;
     hit.vertex = static_cast<int>(i);
@@ -128,16 +122,31 @@ const std::vector<SdfHit>& sdfHits(const DistanceFn& field, const Transform& fie
     hit.surface = field_world.apply(local - s.distance * s.gradient);
     hits.push_back(hit);
   };
+  // Points [first, end), moved two at a time (the bits of to_field.apply); index(j) is the
+  // query index of point j. Most points are outside the bounds or beyond a primitive's reach:
+  // decided in the lanes, they never leave them.
+  const lanes::Transform2 to_field2(to_field);
+  const lanes::Box2 bounds2(query.bounds);
+  const auto testRange = [&](const Vec3* pts, size_t first, size_t end, const auto& index) {
+    for (size_t j = first; j < end; j += 2) {
+      const size_t k = std::min(j + 1, end - 1);  // an odd last point fills both lanes
+      const lanes::Lanes3 local = to_field2.apply(lanes::of(pts[j], pts[k]));
+      const lanes::Mask skip = bounds2.outside(local) | field.beyond(local);
+      if (lanes::all(skip)) continue;
+      if (!skip[0]) test(lanes::lane(local, 0), index(j));
+      if (k != j && !skip[1]) test(lanes::lane(local, 1), index(k));
+    }
+  };
   if (blocks == nullptr) {
-    for (size_t i = 0; i < points.size(); ++i) test(points[i], i);
+    testRange(points.data(), 0, points.size(), [](size_t j) { return j; });
   } else {
     // The visiting order does not matter: the hits are sorted below.
     const Mat3 abs_rotation = to_field.rotation.toRotationMatrix().cwiseAbs();
+    const auto order = [&](size_t j) { return static_cast<size_t>(blocks->order[j]); };
     for (size_t b = 0; b < blocks->bounds.size(); ++b) {
-      if (unseenBlock(blocks->bounds[b], to_field, abs_rotation, query)) continue;
+      if (unseenBlock(blocks->bounds[b], to_field, abs_rotation, query, field)) continue;
       const size_t end = std::min(points.size(), (b + 1) * kSampleBlock);
-      for (size_t j = b * kSampleBlock; j < end; ++j)
-        test(blocks->points[j], static_cast<size_t>(blocks->order[j]));
+      testRange(blocks->points.data(), b * kSampleBlock, end, order);
     }
   }
   // Deepest first, then greedily drop hits too close to a kept one.

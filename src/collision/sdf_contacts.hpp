@@ -3,12 +3,13 @@
 // face to face are seen): the concave-mesh path of the collision stage.
 #pragma once
 
-#include <functional>
+#include <limits>
 #include <span>
 #include <vector>
 
 #include "asperity/geometry/shape.hpp"
 #include "asperity/math/types.hpp"
+#include "collision/primitive_distance.hpp"
 #include "collision/signed_distance_field.hpp"
 
 namespace asperity::collision_detail {
@@ -48,13 +49,48 @@ struct SdfQuery {
   double min_spacing = 0.0;   // kept hits lie at least this far apart (m)
   // Where the field can report anything (field frame); points outside are skipped unseen.
   Eigen::AlignedBox3d bounds = Eigen::AlignedBox3d(Vec3::Constant(-1e300), Vec3::Constant(1e300));
-  // Optional: true when every point within `radius` of `centre` (field frame) lies certainly
-  // farther than max_distance from the field's shape; such blocks of points are skipped.
-  std::function<bool(const Vec3& centre, double radius)> beyond;
 };
 
-// A signed distance in the field shape's frame: a grid field or an exact primitive.
-using DistanceFn = std::function<SignedDistanceField::Sample(const Vec3&)>;
+// The signed distance the query points meet, in the field shape's frame: a grid (closed
+// meshes) or a primitive's exact distance. Two cases, called per point: no std::function.
+class FieldDistance {
+ public:
+  static FieldDistance grid(const SignedDistanceField& field) {
+    FieldDistance d;
+    d.grid_ = &field;
+    return d;
+  }
+  // Points farther than `reach` from the primitive skip the exact distance.
+  static FieldDistance primitive(const Shape& shape, double reach) {
+    FieldDistance d;
+    d.primitive_ = &shape;
+    d.reach_ = reach;
+    d.lane_reach_ = PrimitiveReach(shape, reach);
+    return d;
+  }
+
+  // The sample at p; a distance at or above `below` may come alone (no gradient or triangle).
+  SignedDistanceField::Sample operator()(const Vec3& p, double below) const {
+    if (grid_ != nullptr) return grid_->sample(p, below);
+    if (beyondPrimitive(*primitive_, p, reach_)) {
+      return {.distance = std::numeric_limits<double>::infinity(), .inside_grid = true};
+    }
+    return primitiveSample(*primitive_, p);
+  }
+  // True when every point within `radius` of `centre` lies certainly farther than the reach
+  // from the primitive (a block of points skipped whole); a grid gives false.
+  bool beyond(const Vec3& centre, double radius) const {
+    return primitive_ != nullptr && beyondPrimitive(*primitive_, centre, reach_ + radius);
+  }
+  // Per lane, whether the point lies certainly farther than the reach (a grid: never).
+  lanes::Mask beyond(const lanes::Lanes3& p) const { return lane_reach_.beyond(p); }
+
+ private:
+  const SignedDistanceField* grid_ = nullptr;
+  const Shape* primitive_ = nullptr;
+  double reach_ = 0.0;
+  PrimitiveReach lane_reach_;
+};
 
 // Buffers of sdfHits, kept by the caller so that a step allocates nothing once they grew.
 struct SdfHitBuffers {
@@ -66,12 +102,9 @@ struct SdfHitBuffers {
 // index, so the order is deterministic). `blocks`, when given, group the points
 // (SurfaceSamples::blocks): a block outside query.bounds is skipped whole, with the same hits
 // as testing each of its points.
-const std::vector<SdfHit>& sdfHits(const DistanceFn& field, const Transform& field_world,
+const std::vector<SdfHit>& sdfHits(const FieldDistance& field, const Transform& field_world,
                                    std::span<const Vec3> points, const Transform& points_world,
                                    const SdfQuery& query, SdfHitBuffers& buffers,
                                    const SampleBlocks* blocks = nullptr);
-const std::vector<SdfHit>& sdfHits(const SignedDistanceField& field, const Transform& field_world,
-                                   std::span<const Vec3> points, const Transform& points_world,
-                                   const SdfQuery& query, SdfHitBuffers& buffers);
 
 }  // namespace asperity::collision_detail

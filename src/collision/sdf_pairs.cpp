@@ -100,35 +100,22 @@ void queryContacts(const ShapeRecord& field, const ShapeRecord& query, bool fiel
                    const CollisionSettings& settings, SdfResources& res,
                    std::vector<Contact>& out) {
   // The field: grid for meshes, exact for primitives; spacing and reach in its cells.
-  DistanceFn distance;
-  double cell = largestExtent(field.shape) / settings.sdf_resolution;
+  const SignedDistanceField* grid = field.closed_mesh ? &res.field(field) : nullptr;
+  const double cell =
+      grid ? grid->cellSize() : largestExtent(field.shape) / settings.sdf_resolution;
   SdfQuery q;
-  if (field.closed_mesh) {
-    const SignedDistanceField& grid = res.field(field);
-    distance = [&grid](const Vec3& p) { return grid.sample(p); };
-    cell = grid.cellSize();
-    const Vec3 span = cell * Vec3(grid.nodes(0) - 1, grid.nodes(1) - 1, grid.nodes(2) - 1);
-    q.bounds = Eigen::AlignedBox3d(grid.origin(), grid.origin() + span);
-  }
   q.max_distance =
       settings.report_gaps ? (settings.contact_margin > 0 ? settings.contact_margin : cell) : 0.0;
   q.max_hits = settings.sdf_max_contacts;
   q.min_spacing = settings.sdf_min_spacing * cell;
-  if (!field.closed_mesh) {
+  if (grid) {
+    const Vec3 span = cell * Vec3(grid->nodes(0) - 1, grid->nodes(1) - 1, grid->nodes(2) - 1);
+    q.bounds = Eigen::AlignedBox3d(grid->origin(), grid->origin() + span);
+  } else {
     q.bounds = primitiveBounds(field.shape, std::max(q.max_distance, 0.0));
-    // Points certainly beyond the reported distance skip the exact distance.
-    distance = [&field, reach = q.max_distance](const Vec3& p) {
-      if (beyondPrimitive(field.shape, p, reach))
-        return SignedDistanceField::Sample{.distance = std::numeric_limits<double>::infinity(),
-                                           .inside_grid = true};
-      return primitiveSample(field.shape, p);
-    };
-    // A primitive's distance changes by at most the distance moved: a block of points is
-    // beyond when its centre is beyond by the block's radius more.
-    q.beyond = [&field, reach = q.max_distance](const Vec3& centre, double radius) {
-      return beyondPrimitive(field.shape, centre, reach + radius);
-    };
   }
+  const FieldDistance distance =
+      grid ? FieldDistance::grid(*grid) : FieldDistance::primitive(field.shape, q.max_distance);
   const SurfaceSamples& samples = res.samples(query);
   const ShapeRecord& ra = field_is_a ? field : query;
   const ShapeRecord& rb = field_is_a ? query : field;

@@ -263,7 +263,7 @@ void SignedDistanceField::applySigns(const std::vector<int>& crossings) {
   }
 }
 
-SignedDistanceField::Sample SignedDistanceField::sample(const Vec3& p) const {
+SignedDistanceField::Sample SignedDistanceField::sample(const Vec3& p, double below) const {
   Sample out;
   // Cell containing p and the local coordinates in it.
   const Vec3 f = (p - origin_) / dx_;
@@ -286,6 +286,8 @@ SignedDistanceField::Sample SignedDistanceField::sample(const Vec3& p) const {
   const double v01 = lerp(v[1][0][0], v[1][0][1], x), v11 = lerp(v[1][1][0], v[1][1][1], x);
   const double v0 = lerp(v00, v10, y), v1 = lerp(v01, v11, y);
   out.distance = lerp(v0, v1, z);
+  out.inside_grid = true;
+  if (!(out.distance < below)) return out;
   const double gx = lerp(lerp(v[0][0][1] - v[0][0][0], v[0][1][1] - v[0][1][0], y),
                          lerp(v[1][0][1] - v[1][0][0], v[1][1][1] - v[1][1][0], y), z);
   const double gy = lerp(v10 - v00, v11 - v01, z);
@@ -296,7 +298,6 @@ SignedDistanceField::Sample SignedDistanceField::sample(const Vec3& p) const {
   const int ni = c[0] + (x > 0.5 ? 1 : 0), nj = c[1] + (y > 0.5 ? 1 : 0),
             nk = c[2] + (z > 0.5 ? 1 : 0);
   out.triangle = closest_[index(ni, nj, nk)];
-  out.inside_grid = true;
   return out;
 }
 

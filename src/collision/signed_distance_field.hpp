@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -40,8 +41,9 @@ class SignedDistanceField {
   static std::shared_ptr<const SignedDistanceField> build(const TriangleMeshData& mesh,
                                                           int resolution, int padding = 3);
 
-  // Trilinear value and its gradient at p (mesh frame).
-  Sample sample(const Vec3& p) const;
+  // Trilinear value and its gradient at p (mesh frame). A distance at or above `below` comes
+  // alone (gradient and triangle left unset): the queries discard such points, most of them.
+  Sample sample(const Vec3& p, double below = std::numeric_limits<double>::infinity()) const;
   double cellSize() const { return dx_; }
   const Vec3& origin() const { return origin_; }
   int nodes(int axis) const { return n_[axis]; }

@@ -37,6 +37,7 @@ void finishProfile(RunProfile& p, const World& world) {
   p.patch_ms = s.patch_ms / n;
   p.averaging_ms = s.averaging_ms / n;
   p.solve_ms = s.meanMs(Stage::Solve);
+  p.prepare_ms = s.prepare_ms;
   p.state_hash = world.stateHash();
 }
 

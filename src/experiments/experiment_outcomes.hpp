@@ -51,6 +51,7 @@ struct RunProfile {
   double patch_ms = 0.0;
   double averaging_ms = 0.0;
   double solve_ms = 0.0;
+  double prepare_ms = 0.0;  // World::prepare before the first step (once, not per step)
   double wall_s = 0.0;
   ProfileSums sums;
   uint64_t state_hash = 0;  // of the world at the end of the run

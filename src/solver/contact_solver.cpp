@@ -12,8 +12,8 @@
 #include <variant>
 
 #include "asperity/error.hpp"
+#include "math/lanes.hpp"
 #include "parallel/thread_pool.hpp"
-#include "solver/lanes.hpp"
 
 namespace asperity {
 

@@ -28,7 +28,7 @@
 #include "asperity/dynamics/joint.hpp"
 #include "asperity/friction/limit_surface.hpp"
 #include "asperity/math/types.hpp"
-#include "solver/lanes.hpp"
+#include "math/lanes.hpp"
 
 namespace asperity {
 

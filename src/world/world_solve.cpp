@@ -1,6 +1,7 @@
 // The world's data handed to the middle stages of a step: collision, contact frames, friction
 // coefficients and the constraint solve (sub-steps included).
 #include <algorithm>
+#include <chrono>
 
 #include "asperity/error.hpp"
 #include "asperity/world/world.hpp"
@@ -26,13 +27,19 @@ double World::automaticSlop() const {
   return 0.002 * smallest;
 }
 
-void World::collide() {
+double World::prepare() {
   // Collision objects are rebuilt only when bodies or ignored pairs changed.
-  if (bodies_changed_) {
-    collision_->setBodies(bodies_, CollisionSettings{settings_.contact_margin});
-    slop_ = automaticSlop();
-    bodies_changed_ = false;
-  }
+  if (!bodies_changed_) return 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  collision_->setBodies(bodies_, CollisionSettings{settings_.contact_margin});
+  slop_ = automaticSlop();
+  bodies_changed_ = false;
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+void World::collide() {
+  prepare();
   collision_->setSpeculativeTime(settings_.dt);
   collision_->detect(bodies_, contacts_, pool_.get());
 }

@@ -90,6 +90,8 @@ TEST(RunCommand, StatsHoldPerStepAverages) {
        {"contacts", "fallbacks", "reused", "drivers_ms", "collide_ms", "frames_ms", "friction_ms",
         "patch_ms", "averaging_ms", "solve_ms", "integrate_ms", "total_ms"})
     EXPECT_TRUE(per_step.contains(key)) << key;
+  // The collision set-up before the first step, apart from the per-step means.
+  EXPECT_GT(stats["prepare_ms"].get<double>(), 0.0);
   // A box resting on a plane touches it at its four bottom corners.
   EXPECT_GT(per_step["contacts"].get<double>(), 3.0);
   EXPECT_LE(per_step["contacts"].get<double>(), 4.0);

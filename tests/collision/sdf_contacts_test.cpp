@@ -35,7 +35,8 @@ TEST(SdfContacts, HitsAreDeepestFirstAndSpreadOut) {
   q.max_hits = 3;
   q.min_spacing = 0.015;
   SdfHitBuffers buffers;
-  const auto& hits = sdfHits(*field, field_world, points, field_world, q, buffers);
+  const auto& hits =
+      sdfHits(FieldDistance::grid(*field), field_world, points, field_world, q, buffers);
   // Depths 4, 2 and 0 mm... no: the spacing drops the 3 mm and 1 mm neighbours.
   ASSERT_EQ(hits.size(), 3u);
   EXPECT_EQ(hits[0].vertex, 4);
@@ -65,7 +66,7 @@ TEST(SdfContacts, SkippingBlocksOutsideTheFieldKeepsEveryHit) {
   const Vec3 span =
       field->cellSize() * Vec3(field->nodes(0) - 1, field->nodes(1) - 1, field->nodes(2) - 1);
   q.bounds = Eigen::AlignedBox3d(field->origin(), field->origin() + span);
-  const auto distance = [&](const Vec3& p) { return field->sample(p); };
+  const FieldDistance distance = FieldDistance::grid(*field);
   SdfHitBuffers each_buffers, blocked_buffers;
   const auto& each = sdfHits(distance, field_world, samples.points, points_world, q, each_buffers);
   const auto& blocked = sdfHits(distance, field_world, samples.points, points_world, q,

@@ -2,6 +2,8 @@
 // bad input, lookups, the state hash and the step profile.
 #include "asperity/world/world.hpp"
 
+#include <memory>
+
 #include <gtest/gtest.h>
 
 #include "asperity/error.hpp"
@@ -203,6 +205,28 @@ TEST(World, LookupsAndClock) {
   world.step();
   EXPECT_EQ(world.stepCount(), 2);
   EXPECT_TRUE(near(world.time(), 0.02, 1e-15));
+}
+
+// prepare() builds the collision objects once, ahead of the step that would have, and changes
+// no result; a new body makes the next call build again.
+TEST(World, PrepareBuildsOnceAndChangesNoBits) {
+  auto make = [] {
+    auto world = std::make_unique<World>();
+    world->createBody(groundPlaneDesc());
+    world->createBody(boxDesc("cube", Vec3::Constant(0.1), {Vec3(0, 0, 0.12), Quat::Identity()}));
+    return world;
+  };
+  const auto plain = make(), prepared = make();
+  EXPECT_GT(prepared->prepare(), 0.0);
+  EXPECT_EQ(prepared->prepare(), 0.0);
+  for (int i = 0; i < 20; ++i) {
+    plain->step();
+    prepared->step();
+  }
+  EXPECT_EQ(prepared->stateHash(), plain->stateHash());
+  EXPECT_EQ(prepared->prepare(), 0.0);
+  prepared->createBody(boxDesc("second", Vec3::Constant(0.1), {Vec3(1, 0, 0.1), Quat::Identity()}));
+  EXPECT_GT(prepared->prepare(), 0.0);
 }
 
 TEST(World, StateHashSeesEveryBit) {

@@ -16,7 +16,8 @@ namespace asperity {
 int64_t stepsFor(double seconds, double dt, const char* what = "seconds");
 
 // Steps `world` `steps` times, adding each step's profile to `sums` when given and calling
-// `after_step(i)` after step i = 1..steps. Returns the wall-clock seconds of the loop.
+// `after_step(i)` after step i = 1..steps. World::prepare runs first, its time in
+// sums->prepare_ms rather than in a step's. Returns the wall-clock seconds of it all.
 // Exceptions from World::step (StepError) pass through.
 double runSteps(World& world, int64_t steps, ProfileSums* sums = nullptr,
                 const std::function<void(int64_t)>& after_step = {});
