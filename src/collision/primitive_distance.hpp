@@ -26,7 +26,6 @@ class PrimitiveReach {
   PrimitiveReach(const Shape& shape, double reach);
 
   lanes::Mask beyond(const lanes::Lanes3& p) const {
-    using lanes::splat;
     switch (type_) {
       case ShapeType::Sphere:
         return radius2_ < p.x * p.x + p.y * p.y + p.z * p.z;

@@ -1,8 +1,13 @@
 // Surface samples of meshes and signed-distance hits (depth order, spacing, frames).
 #include "collision/sdf_contacts.hpp"
 
+#include <algorithm>
+#include <utility>
+#include <vector>
+
 #include <gtest/gtest.h>
 
+#include "collision/primitive_distance.hpp"
 #include "collision_test_scenes.hpp"
 #include "support/test_support.hpp"
 
@@ -76,6 +81,54 @@ TEST(SdfContacts, SkippingBlocksOutsideTheFieldKeepsEveryHit) {
   for (size_t i = 0; i < each.size(); ++i) {
     EXPECT_EQ(blocked[i].vertex, each[i].vertex);
     EXPECT_EQ(blocked[i].distance, each[i].distance);
+  }
+}
+
+// The points go through the field's frame two at a time and meet the bounds and a primitive's
+// reach in the lanes: the hits must be those of moving and testing each point alone, bit for bit.
+TEST(SdfContacts, PointsInLanesGiveTheHitsOfEachPointAlone) {
+  const SurfaceSamples samples =
+      surfaceSamples(*collision_test::boxMesh(Vec3(0.04, 0.03, 0.05)), 0.004, 100000);
+  std::vector<Shape> shapes(3);
+  shapes[0].type = ShapeType::Sphere;
+  shapes[0].radius = 0.035;
+  shapes[1].type = ShapeType::Capsule;
+  shapes[1].radius = 0.02, shapes[1].half_height = 0.03;
+  shapes[2].type = ShapeType::Cylinder;
+  shapes[2].radius = 0.025, shapes[2].half_height = 0.02;
+  const Transform field_world{Vec3(0.01, -0.02, 0.03),
+                              Quat(Eigen::AngleAxisd(0.7, Vec3(-1, 2, 0.5).normalized()))};
+  const Transform points_world{Vec3(0.004, 0.0, -0.003),
+                               Quat(Eigen::AngleAxisd(0.4, Vec3(0.2, 1, -1).normalized()))};
+  const Transform to_field = field_world.inverse() * points_world;
+  for (const Shape& shape : shapes) {
+    SdfQuery q;
+    q.max_hits = 100000;
+    q.max_distance = 0.003;
+    const double r = std::max(shape.radius + shape.half_height, shape.radius) + q.max_distance;
+    q.bounds = Eigen::AlignedBox3d(Vec3::Constant(-r), Vec3::Constant(r));
+    SdfHitBuffers buffers;
+    const auto& hits = sdfHits(FieldDistance::primitive(shape, q.max_distance), field_world,
+                               samples.points, points_world, q, buffers, &samples.blocks);
+    // Each point alone: Transform::apply, then the exact distance.
+    std::vector<std::pair<double, int>> alone;
+    for (size_t i = 0; i < samples.points.size(); ++i) {
+      const Vec3 local = to_field.apply(samples.points[i]);
+      const double d = primitiveSample(shape, local).distance;
+      if (q.bounds.contains(local) && d < q.max_distance)
+        alone.emplace_back(d, static_cast<int>(i));
+    }
+    std::sort(alone.begin(), alone.end());
+    ASSERT_GT(alone.size(), 20u) << static_cast<int>(shape.type);
+    ASSERT_LT(alone.size(), samples.points.size() / 2) << static_cast<int>(shape.type);
+    ASSERT_EQ(hits.size(), alone.size()) << static_cast<int>(shape.type);
+    for (size_t k = 0; k < hits.size(); ++k) {
+      EXPECT_EQ(hits[k].vertex, alone[k].second);
+      EXPECT_EQ(hits[k].distance, alone[k].first);
+      EXPECT_EQ(
+          hits[k].point,
+          field_world.apply(to_field.apply(samples.points[static_cast<size_t>(hits[k].vertex)])));
+    }
   }
 }
 
