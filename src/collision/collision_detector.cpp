@@ -472,6 +472,7 @@ struct CollisionDetector::Impl {
   void collect(std::span<const Body> bodies, const ThreadPool* pool);
 
   void build(std::span<const Body> bodies);
+  void prepareSdf();
   void createWorld(size_t shape_count);
   void addBody(BodyId id, const Body& body);
   void collectManifolds();
@@ -851,14 +852,25 @@ void CollisionDetector::Impl::build(std::span<const Body> bodies) {
     body_types.push_back(bodies[b].type);
     addBody(static_cast<BodyId>(b), bodies[b]);
   }
-  for (ShapeRecord& rec : records) {
-    world->addCollisionObject(rec.object.get());
-    // Fields and surface points of dynamic closed meshes now rather than in the first step
-    // (static ones, and the points of the shapes they meet, on first use).
-    if (settings.mesh_pairs == MeshPairMode::Auto && rec.closed_mesh &&
-        rec.body_type == BodyType::Dynamic) {
-      sdf.field(rec);
-      sdf.samples(rec);
+  for (ShapeRecord& rec : records) world->addCollisionObject(rec.object.get());
+  prepareSdf();
+}
+
+void CollisionDetector::Impl::prepareSdf() {
+  // Fields and surface points of dynamic closed meshes now rather than in the first step, and
+  // the points of the shapes whose bounding spheres already meet theirs (a bolt through a
+  // nut); fields of static meshes and points of shapes met later come on first use.
+  if (settings.mesh_pairs != MeshPairMode::Auto) return;
+  for (const ShapeRecord& mesh : records) {
+    if (!mesh.closed_mesh || mesh.body_type != BodyType::Dynamic) continue;
+    sdf.field(mesh);
+    sdf.samples(mesh);
+    for (const ShapeRecord& other : records) {
+      const double reach = mesh.bounding_radius + other.bounding_radius;
+      if (other.body != mesh.body && collision_detail::isSdfPair(mesh, other) &&
+          (other.world.position - mesh.world.position).squaredNorm() <= reach * reach) {
+        sdf.samples(other);
+      }
     }
   }
 }
