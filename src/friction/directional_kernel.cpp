@@ -10,6 +10,7 @@
 
 #include "asperity/error.hpp"
 #include "asperity/friction/fragment_model.hpp"
+#include "math/simd_clones.hpp"
 
 namespace asperity {
 
@@ -19,7 +20,8 @@ constexpr size_t kLanes = 16;
 constexpr size_t kChunk = 1024;
 
 // Sum of max(0, gx dx + gy dy) over one chunk (at most kChunk fragments).
-double chunkSum(const float* gx, const float* gy, size_t len, float dx, float dy) {
+ASPERITY_AVX2_CLONES double chunkSum(const float* gx, const float* gy, size_t len, float dx,
+                                     float dy) {
   float acc[kLanes] = {};
   const size_t body = len - len % kLanes;
   // kLanes independent partial sums: the inner loop maps onto vector registers.

@@ -7,6 +7,7 @@
 
 #include "asperity/friction/fragment_model.hpp"
 #include "asperity/geometry/shape_mesh.hpp"
+#include "math/simd_clones.hpp"
 #include "sampler/patch_texture.hpp"
 
 namespace asperity::patch {
@@ -134,8 +135,8 @@ RunSetup setupRun(const Volume& volume, const Planar& p) {
 // weights: straight-line code the compiler vectorises (masks and shifts for power-of-two
 // maps). Returns the largest offset.
 template <bool kPow2>
-int chunkTexels(const RunSetup& s, const Planar& p, const uint32_t* pixels, size_t n,
-                ChunkTexels& t) {
+[[gnu::always_inline]] inline int chunkTexels(const RunSetup& s, const Planar& p,
+                                              const uint32_t* pixels, size_t n, ChunkTexels& t) {
   int top = 0;
   for (size_t c = 0; c < n; ++c) {
     // Through int: an unsigned conversion branches on baseline x86-64.
@@ -167,8 +168,8 @@ int chunkTexels(const RunSetup& s, const Planar& p, const uint32_t* pixels, size
 }
 
 // Bilinear blend (unnormalised, as sampleNormal) through the primitive's constant frame.
-void chunkNormals(const float* tex, const Eigen::Matrix3f& f, const ChunkTexels& t, size_t n,
-                  ChunkNormals& m) {
+[[gnu::always_inline]] inline void chunkNormals(const float* tex, const Eigen::Matrix3f& f,
+                                                const ChunkTexels& t, size_t n, ChunkNormals& m) {
   for (size_t c = 0; c < n; ++c) {
     float b[3];
     for (int k = 0; k < 3; ++k) {
@@ -185,8 +186,8 @@ void chunkNormals(const float* tex, const Eigen::Matrix3f& f, const ChunkTexels&
 // chunkNormals with each texel's three channels in one 4-float register: the same float
 // operations per channel. Reads one float past each texel, so the caller keeps it off the
 // map's last texel.
-void chunkNormals4(const float* tex, const Eigen::Matrix3f& f, const ChunkTexels& t, size_t n,
-                   ChunkNormals& m) {
+[[gnu::always_inline]] inline void chunkNormals4(const float* tex, const Eigen::Matrix3f& f,
+                                                 const ChunkTexels& t, size_t n, ChunkNormals& m) {
   using Texel = Eigen::Array4f;
   auto load = [tex](int offset) { return Texel(Eigen::Map<const Texel>(tex + offset)); };
   const Texel c0(f(0, 0), f(1, 0), f(2, 0), 0.0f);
@@ -219,8 +220,8 @@ inline bool unclamped(float x, float y, float height, float mu_max) {
 // The unclamped branch of ploughingVector (g = (2/pi) m_tb / c, the same float operations) for
 // every fragment, branch-free so it vectorises; returns how many need the clamped branch
 // (chunkClamped overwrites those).
-int chunkPloughing(const ChunkNormals& m, size_t n, float sign, float mu_max, float* gx,
-                   float* gy) {
+[[gnu::always_inline]] inline int chunkPloughing(const ChunkNormals& m, size_t n, float sign,
+                                                 float mu_max, float* gx, float* gy) {
   int clamped = 0;
   for (size_t c = 0; c < n; ++c) {
     const float height = sign * m.z[c];
@@ -245,9 +246,12 @@ void chunkClamped(const ChunkNormals& m, size_t n, Side side, float mu_max, floa
 }
 
 // Ploughing vectors of fragments [k0, k1) of one batchable primitive (unit gain), by chunks:
-// texel indices, normals, then g; no per-fragment call and no normalisation.
-void shadeRun(const Volume& volume, const Planar& p, Side side, float mu_max,
-              std::span<const uint32_t> pixels, size_t k0, size_t k1, float* gx, float* gy) {
+// texel indices, normals, then g; no per-fragment call and no normalisation. Made for AVX2 and
+// for baseline x86-64 (math/simd_clones.hpp); the chunk functions are always inlined, so each
+// clone has them in its own instruction set (eight fragments per register with AVX2).
+ASPERITY_AVX2_CLONES void shadeRun(const Volume& volume, const Planar& p, Side side, float mu_max,
+                                   std::span<const uint32_t> pixels, size_t k0, size_t k1,
+                                   float* gx, float* gy) {
   const RunSetup setup = setupRun(volume, p);
   const float sign = side == Side::B ? 1.0f : -1.0f;
   ChunkTexels texels;
