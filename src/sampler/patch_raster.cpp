@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "math/simd_clones.hpp"
+
 namespace asperity::patch {
 
 namespace {
@@ -234,7 +236,7 @@ bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool 
 namespace {
 
 // Whether pixel centre (x, y) is inside the primitive's edges (the exact test).
-bool insideEdges(const Planar& prim, double x, double y) {
+[[gnu::always_inline]] inline bool insideEdges(const Planar& prim, double x, double y) {
   for (int k = 0; k < prim.edge_count; ++k) {
     if (!prim.edges[static_cast<size_t>(k)].inside(x, y)) return false;
   }
@@ -244,7 +246,8 @@ bool insideEdges(const Planar& prim, double x, double y) {
 // Narrows [lo, hi] to the pixels of the row where a x + rest satisfies the half-line (> 0, or
 // >= 0 when inclusive) or, for the depth clip, |a x + rest| <= h. Conservative: the exact test
 // trims the ends afterwards.
-void clipSpan(const Volume& volume, double a, double lo_value, double hi_value, int& lo, int& hi) {
+[[gnu::always_inline]] inline void clipSpan(const Volume& volume, double a, double lo_value,
+                                            double hi_value, int& lo, int& hi) {
   // Solutions of lo_value <= a x <= hi_value, as pixel indices.
   if (a == 0.0) {
     if (lo_value > 0.0 || hi_value < 0.0) hi = lo - 1;
@@ -269,7 +272,7 @@ struct EdgeBound {
   bool lower = true, horizontal = false;
 };
 
-EdgeBound edgeBound(const Volume& volume, const Edge& e) {
+[[gnu::always_inline]] inline EdgeBound edgeBound(const Volume& volume, const Edge& e) {
   EdgeBound eb;
   eb.horizontal = e.a == 0.0;
   if (eb.horizontal) return eb;
@@ -283,8 +286,8 @@ EdgeBound edgeBound(const Volume& volume, const Edge& e) {
 
 // Narrows [lo, hi] by one edge at row j. Pixels more than kSlack pixel widths outside the edge
 // are dropped (rounding here is far below that); the rest are left to the exact test.
-void clipEdge(const EdgeBound& eb, const Edge& e, double y, int j, int resolution, int& lo,
-              int& hi) {
+[[gnu::always_inline]] inline void clipEdge(const EdgeBound& eb, const Edge& e, double y, int j,
+                                            int resolution, int& lo, int& hi) {
   constexpr double kSlack = 1e-3;
   if (eb.horizontal) {
     if (e.b * y + e.c < 0.0) hi = lo - 1;
@@ -317,20 +320,23 @@ struct CentreBox {
 
 // The least of the affine c + dx x + dy y over the box: at the corner its slopes point away
 // from.
-double leastOverBox(double c, double dx, double dy, const CentreBox& box) {
+[[gnu::always_inline]] inline double leastOverBox(double c, double dx, double dy,
+                                                  const CentreBox& box) {
   const double x = dx >= 0.0 ? box.x0 : box.x1, y = dy >= 0.0 ? box.y0 : box.y1;
   return c + dx * x + dy * y;
 }
 
 // Whether the affine c + dx x + dy y stays above `floor` over the box, by a margin far above
 // the rounding of evaluating it at a pixel centre.
-bool aboveOverBox(double c, double dx, double dy, double floor, const CentreBox& box) {
+[[gnu::always_inline]] inline bool aboveOverBox(double c, double dx, double dy, double floor,
+                                                const CentreBox& box) {
   const double margin = 1e-9 * (std::abs(c) + std::abs(dx) * box.reach_x +
                                 std::abs(dy) * box.reach_y + std::abs(floor));
   return leastOverBox(c, dx, dy, box) > floor + margin;
 }
 
-Cuts cutsWithin(const Volume& volume, const Planar& prim, int j0, int j1) {
+[[gnu::always_inline]] inline Cuts cutsWithin(const Volume& volume, const Planar& prim, int j0,
+                                              int j1) {
   CentreBox box{volume.centreX(prim.i0),
                 volume.centreX(prim.i1),
                 volume.centreX(j0),
@@ -356,8 +362,8 @@ Cuts cutsWithin(const Volume& volume, const Planar& prim, int j0, int j1) {
 
 // Notes the clip decisions of the pixel centres lo..hi of a row where z = zr + dx x. Each
 // margin is least at an end of the row, or beside where z crosses -h or h.
-void noteRow(const Volume& volume, double zr, double dx, double h, int lo, int hi,
-             DepthMargins& depth) {
+[[gnu::always_inline]] inline void noteRow(const Volume& volume, double zr, double dx, double h,
+                                           int lo, int hi, DepthMargins& depth) {
   auto note = [&](double i) {
     if (i >= lo && i <= hi) depth.note(zr + dx * volume.centreX(static_cast<int>(i)), h);
   };
@@ -371,7 +377,8 @@ void noteRow(const Volume& volume, double zr, double dx, double h, int lo, int h
 
 // The exact test (edges, depth clip) over the cutting constraints only (the others hold in
 // the box).
-bool insideCuts(const Planar& prim, const Cuts& cuts, double h, double x, double y) {
+[[gnu::always_inline]] inline bool insideCuts(const Planar& prim, const Cuts& cuts, double h,
+                                              double x, double y) {
   for (int k = 0; k < cuts.edge_count; ++k) {
     if (!prim.edges[static_cast<size_t>(cuts.edges[static_cast<size_t>(k)])].inside(x, y)) {
       return false;
@@ -382,7 +389,11 @@ bool insideCuts(const Planar& prim, const Cuts& cuts, double h, double x, double
 
 }  // namespace
 
-void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, SurfaceRaster& raster) {
+// Made for AVX2 and for baseline x86-64 (math/simd_clones.hpp): the row set-up's floors and
+// ceilings are one instruction there (SSE4.1). Its helpers above are always inlined, so each
+// clone has them in its own instruction set.
+ASPERITY_AVX2_CLONES void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id,
+                                          SurfaceRaster& raster) {
   const int r = volume.resolution;
   const double h = volume.half_depth;
   const float sign = raster.side == Side::B ? 1.0f : -1.0f;
