@@ -10,7 +10,7 @@
 
 #include "asperity/error.hpp"
 #include "asperity/friction/fragment_model.hpp"
-#include "math/simd_clones.hpp"
+#include "math/simd.hpp"
 
 namespace asperity {
 
@@ -20,8 +20,8 @@ constexpr size_t kLanes = 16;
 constexpr size_t kChunk = 1024;
 
 // Sum of max(0, gx dx + gy dy) over one chunk (at most kChunk fragments).
-ASPERITY_AVX2_CLONES double chunkSum(const float* gx, const float* gy, size_t len, float dx,
-                                     float dy) {
+[[gnu::always_inline]] inline double chunkSumBody(const float* gx, const float* gy, size_t len,
+                                                  float dx, float dy) {
   float acc[kLanes] = {};
   const size_t body = len - len % kLanes;
   // kLanes independent partial sums: the inner loop maps onto vector registers.
@@ -39,6 +39,21 @@ ASPERITY_AVX2_CLONES double chunkSum(const float* gx, const float* gy, size_t le
   }
   for (size_t j = 0; j < kLanes; ++j) total += acc[j];
   return total;
+}
+
+#if ASPERITY_AVX2_COPIES
+// The AVX2 copy (math/simd.hpp): 16 partial sums in two registers.
+ASPERITY_TARGET_AVX2 double chunkSumAvx2(const float* gx, const float* gy, size_t len, float dx,
+                                         float dy) {
+  return chunkSumBody(gx, gy, len, dx, dy);
+}
+#endif
+
+double chunkSum(const float* gx, const float* gy, size_t len, float dx, float dy) {
+#if ASPERITY_AVX2_COPIES
+  if (simd::avx2()) return chunkSumAvx2(gx, gy, len, dx, dy);
+#endif
+  return chunkSumBody(gx, gy, len, dx, dy);
 }
 
 }  // namespace

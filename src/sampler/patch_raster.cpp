@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "math/simd_clones.hpp"
+#include "math/simd.hpp"
 
 namespace asperity::patch {
 
@@ -387,13 +387,8 @@ struct CentreBox {
   return !cuts.depth || std::abs(prim.z.at(x, y)) <= h;
 }
 
-}  // namespace
-
-// Made for AVX2 and for baseline x86-64 (math/simd_clones.hpp): the row set-up's floors and
-// ceilings are one instruction there (SSE4.1). Its helpers above are always inlined, so each
-// clone has them in its own instruction set.
-ASPERITY_AVX2_CLONES void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id,
-                                          SurfaceRaster& raster) {
+[[gnu::always_inline]] inline void rasterisePlanarBody(const Volume& volume, const Planar& prim,
+                                                       int32_t id, SurfaceRaster& raster) {
   const int r = volume.resolution;
   const double h = volume.half_depth;
   const float sign = raster.side == Side::B ? 1.0f : -1.0f;
@@ -462,6 +457,24 @@ ASPERITY_AVX2_CLONES void rasterisePlanar(const Volume& volume, const Planar& pr
       }
     }
   }
+}
+
+#if ASPERITY_AVX2_COPIES
+// The AVX2 copy (math/simd.hpp): the row set-up's floors and ceilings are one instruction there
+// (SSE4.1); the helpers above are always inlined, so they are compiled with AVX2 too.
+ASPERITY_TARGET_AVX2 void rasterisePlanarAvx2(const Volume& volume, const Planar& prim, int32_t id,
+                                              SurfaceRaster& raster) {
+  rasterisePlanarBody(volume, prim, id, raster);
+}
+#endif
+
+}  // namespace
+
+void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, SurfaceRaster& raster) {
+#if ASPERITY_AVX2_COPIES
+  if (simd::avx2()) return rasterisePlanarAvx2(volume, prim, id, raster);
+#endif
+  rasterisePlanarBody(volume, prim, id, raster);
 }
 
 bool castCurved(const Curved& prim, Side side, double x, double y, double& z) {

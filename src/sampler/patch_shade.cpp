@@ -7,7 +7,7 @@
 
 #include "asperity/friction/fragment_model.hpp"
 #include "asperity/geometry/shape_mesh.hpp"
-#include "math/simd_clones.hpp"
+#include "math/simd.hpp"
 #include "sampler/patch_texture.hpp"
 
 namespace asperity::patch {
@@ -246,12 +246,10 @@ void chunkClamped(const ChunkNormals& m, size_t n, Side side, float mu_max, floa
 }
 
 // Ploughing vectors of fragments [k0, k1) of one batchable primitive (unit gain), by chunks:
-// texel indices, normals, then g; no per-fragment call and no normalisation. Made for AVX2 and
-// for baseline x86-64 (math/simd_clones.hpp); the chunk functions are always inlined, so each
-// clone has them in its own instruction set (eight fragments per register with AVX2).
-ASPERITY_AVX2_CLONES void shadeRun(const Volume& volume, const Planar& p, Side side, float mu_max,
-                                   std::span<const uint32_t> pixels, size_t k0, size_t k1,
-                                   float* gx, float* gy) {
+// texel indices, normals, then g; no per-fragment call and no normalisation.
+[[gnu::always_inline]] inline void shadeRunBody(const Volume& volume, const Planar& p, Side side,
+                                                float mu_max, std::span<const uint32_t> pixels,
+                                                size_t k0, size_t k1, float* gx, float* gy) {
   const RunSetup setup = setupRun(volume, p);
   const float sign = side == Side::B ? 1.0f : -1.0f;
   ChunkTexels texels;
@@ -270,6 +268,24 @@ ASPERITY_AVX2_CLONES void shadeRun(const Volume& volume, const Planar& p, Side s
       chunkClamped(normals, n, side, mu_max, gx + c0, gy + c0);
     }
   }
+}
+
+#if ASPERITY_AVX2_COPIES
+// The AVX2 copy (math/simd.hpp): the chunk functions are always inlined, so they are compiled
+// with AVX2 too (eight fragments per register).
+ASPERITY_TARGET_AVX2 void shadeRunAvx2(const Volume& volume, const Planar& p, Side side,
+                                       float mu_max, std::span<const uint32_t> pixels, size_t k0,
+                                       size_t k1, float* gx, float* gy) {
+  shadeRunBody(volume, p, side, mu_max, pixels, k0, k1, gx, gy);
+}
+#endif
+
+void shadeRun(const Volume& volume, const Planar& p, Side side, float mu_max,
+              std::span<const uint32_t> pixels, size_t k0, size_t k1, float* gx, float* gy) {
+#if ASPERITY_AVX2_COPIES
+  if (simd::avx2()) return shadeRunAvx2(volume, p, side, mu_max, pixels, k0, k1, gx, gy);
+#endif
+  shadeRunBody(volume, p, side, mu_max, pixels, k0, k1, gx, gy);
 }
 
 }  // namespace
