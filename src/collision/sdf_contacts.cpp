@@ -108,8 +108,8 @@ const std::vector<SdfHit>& sdfHits(const FieldDistance& field, const Transform& 
   const Transform to_field = field_world.inverse() * points_world;
   std::vector<SdfHit>& hits = buffers.hits;
   hits.clear();
+  // A point inside the bounds and not beyond the reach (decided in the lanes, below).
   const auto test = [&](const Vec3& local, size_t i) {
-    if (!query.bounds.contains(local)) return;
     const SignedDistanceField::Sample s = field(local, query.max_distance);
     if (!s.inside_grid || s.distance >= query.max_distance) return;
     SdfHit hit;

@@ -3,7 +3,6 @@
 // face to face are seen): the concave-mesh path of the collision stage.
 #pragma once
 
-#include <limits>
 #include <span>
 #include <vector>
 
@@ -70,11 +69,9 @@ class FieldDistance {
   }
 
   // The sample at p; a distance at or above `below` may come alone (no gradient or triangle).
+  // sdfHits asks only for points that beyond(p) below has not already ruled out.
   SignedDistanceField::Sample operator()(const Vec3& p, double below) const {
     if (grid_ != nullptr) return grid_->sample(p, below);
-    if (beyondPrimitive(*primitive_, p, reach_)) {
-      return {.distance = std::numeric_limits<double>::infinity(), .inside_grid = true};
-    }
     return primitiveSample(*primitive_, p);
   }
   // True when every point within `radius` of `centre` lies certainly farther than the reach

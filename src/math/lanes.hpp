@@ -101,9 +101,10 @@ struct Box2 {
   Lanes3 lo, hi;
 
   explicit Box2(const Eigen::AlignedBox3d& box) : lo(splat(box.min())), hi(splat(box.max())) {}
-  // Per lane, whether the point lies outside (as !box.contains(p); NaN counts as inside).
+  // Per lane, whether the point lies outside: !box.contains(p), so NaN is outside too.
   Mask outside(const Lanes3& p) const {
-    return (p.x < lo.x) | (p.y < lo.y) | (p.z < lo.z) | (hi.x < p.x) | (hi.y < p.y) | (hi.z < p.z);
+    return ~((lo.x <= p.x) & (lo.y <= p.y) & (lo.z <= p.z) & (p.x <= hi.x) & (p.y <= hi.y) &
+             (p.z <= hi.z));
   }
 };
 
