@@ -2,6 +2,7 @@
 // gathered into one triangle mesh, the first normal-mapped material decoded.
 #include "asperity/geometry/asset_import.hpp"
 
+#include <assimp/BaseImporter.h>
 #include <assimp/GltfMaterial.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
@@ -14,6 +15,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
+#include <set>
 
 #include "asperity/error.hpp"
 #include "geometry/asset_import_internal.hpp"
@@ -27,6 +30,29 @@ namespace {
 // validated (so a broken file fails here, not later).
 constexpr unsigned kImportFlags =
     aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
+
+// An assimp importer that reads only the format the extension names. Left alone, assimp guesses
+// another format from the content when the named one cannot read it, and some of those readers
+// take a few hostile bytes for gigabytes to allocate (tests/fuzz found one behind a ".glb").
+class FormatImporter {
+ public:
+  explicit FormatImporter(const std::string& extension) {
+    for (size_t i = importer_.GetImporterCount(); i-- > 0;) {
+      Assimp::BaseImporter* reader = importer_.GetImporter(i);
+      std::set<std::string> extensions;
+      reader->GetExtensionList(extensions);
+      if (extensions.count(extension) != 0) continue;
+      importer_.UnregisterLoader(reader);
+      unregistered_.emplace_back(reader);
+    }
+  }
+  Assimp::Importer& get() { return importer_; }
+
+ private:
+  Assimp::Importer importer_;
+  // assimp deletes only the readers still registered; these are ours to delete.
+  std::vector<std::unique_ptr<Assimp::BaseImporter>> unregistered_;
+};
 
 // A mesh chosen for import with the transform of the node that holds it.
 struct Placed {
@@ -290,10 +316,10 @@ ImportedAsset importAsset(const std::string& path, const AssetImportOptions& opt
                 "' (read: .obj, .gltf, .glb, .fbx, .dae, .3ds)");
   if (!std::filesystem::is_regular_file(path)) throw Error(path + ": cannot open file");
   // assimp may crash on a malformed file: a child reads it first (geometry/child_probe.hpp).
-  detail::probeInChild(path, [&] { Assimp::Importer().ReadFile(path, kImportFlags); });
-  Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(path, kImportFlags);
-  if (!scene) throw Error(path + ": cannot import (" + importerError(importer) + ")");
+  detail::probeInChild(path, [&] { FormatImporter(ext).get().ReadFile(path, kImportFlags); });
+  FormatImporter importer(ext);
+  const aiScene* scene = importer.get().ReadFile(path, kImportFlags);
+  if (!scene) throw Error(path + ": cannot import (" + importerError(importer.get()) + ")");
   const detail::Source src{path, std::filesystem::path(path).parent_path().string(),
                            ext == "gltf" || ext == "glb"};
   return convert(*scene, src, options);
@@ -310,14 +336,13 @@ ImportedAsset importAssetFromMemory(const std::vector<uint8_t>& bytes, const std
   if (!isAssimpExtension(extension))
     throw Error(name + ": unknown mesh format '" + extension + "'");
   if (bytes.empty()) throw Error(name + ": empty file");
-  detail::probeInChild(name, [&] {
-    Assimp::Importer().ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags,
-                                          extension.c_str());
-  });
-  Assimp::Importer importer;
-  const aiScene* scene =
-      importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, extension.c_str());
-  if (!scene) throw Error(name + ": cannot import (" + importerError(importer) + ")");
+  const auto read = [&](Assimp::Importer& importer) {
+    return importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, extension.c_str());
+  };
+  detail::probeInChild(name, [&] { read(FormatImporter(extension).get()); });
+  FormatImporter importer(extension);
+  const aiScene* scene = read(importer.get());
+  if (!scene) throw Error(name + ": cannot import (" + importerError(importer.get()) + ")");
   const detail::Source src{name, "", extension == "gltf" || extension == "glb"};
   return convert(*scene, src, options);
 }

@@ -234,5 +234,21 @@ TEST(AssetImport, BadPathsAndOptions) {
             "tri.obj: OBJ cannot be read from memory (an OBJ and its MTL are read from files)");
 }
 
+// A file is read only as the format its extension names: assimp would otherwise guess another
+// format from the content (an STL here; tests/fuzz found a reader that then allocated gigabytes).
+TEST(AssetImport, ContentOfAnotherFormatIsNotGuessed) {
+  const std::string stl =
+      "solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+      "endloop\nendfacet\nendsolid t\n";
+  const std::vector<uint8_t> bytes(stl.begin(), stl.end());
+  for (const char* format : {"glb", "gltf", "fbx", "dae", "3ds"}) {
+    const std::string message = test::errorOf([&] { importAssetFromMemory(bytes, "tri", format); });
+    EXPECT_EQ(message.rfind("tri: cannot import (", 0), 0u) << format << ": " << message;
+  }
+  const std::filesystem::path path = std::filesystem::path(testing::TempDir()) / "stl_inside.gltf";
+  std::ofstream(path) << stl;
+  EXPECT_EQ(importError(path.string()).rfind(path.string() + ": cannot import (", 0), 0u);
+}
+
 }  // namespace
 }  // namespace asperity
