@@ -9,14 +9,17 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <array>
 #include <assimp/Importer.hpp>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <memory>
 #include <set>
+#include <span>
 
 #include "asperity/error.hpp"
 #include "geometry/asset_import_internal.hpp"
@@ -299,6 +302,33 @@ std::string importerError(const Assimp::Importer& importer) {
   return why.empty() ? "unreadable" : why;
 }
 
+// Reads little-endian uint32 at `at`.
+uint32_t littleEndian32(const uint8_t* at) {
+  return uint32_t{at[0]} | uint32_t{at[1]} << 8 | uint32_t{at[2]} << 16 | uint32_t{at[3]} << 24;
+}
+
+// A GLB's header (glTF 2.0, "Binary glTF Layout"): magic "glTF", version, total length, then the
+// first chunk's length. assimp allocates and fills both lengths before reading (a 1 kB file
+// claiming a 4 GB chunk takes 4 GB and half a minute), so they must fit the file. `head` holds
+// the file's first bytes (up to 20).
+void checkGlbLengths(std::span<const uint8_t> head, uint64_t file_size, const std::string& name) {
+  if (head.size() < 16 || std::memcmp(head.data(), "glTF", 4) != 0) return;  // assimp's to judge
+  const uint32_t total = littleEndian32(&head[8]), chunk = littleEndian32(&head[12]);
+  if (total > file_size)
+    throw Error(name + ": the GLB header gives a length of " + std::to_string(total) +
+                " bytes, but the file has " + std::to_string(file_size));
+  if (uint64_t{chunk} + 20 > total)
+    throw Error(name + ": the GLB's first chunk claims " + std::to_string(chunk) +
+                " bytes, more than the file's " + std::to_string(total) + " hold");
+}
+
+// The child's limits for reading a file of `bytes`: what assimp needs grows with the file.
+detail::ProbeLimits probeLimits(uint64_t bytes) {
+  detail::ProbeLimits limits;
+  limits.memory_bytes += static_cast<size_t>(std::min<uint64_t>(bytes, uint64_t{1} << 40) * 8);
+  return limits;
+}
+
 }  // namespace
 
 bool isAssimpExtension(const std::string& extension) {
@@ -315,8 +345,17 @@ ImportedAsset importAsset(const std::string& path, const AssetImportOptions& opt
     throw Error(path + ": unknown mesh format '." + ext +
                 "' (read: .obj, .gltf, .glb, .fbx, .dae, .3ds)");
   if (!std::filesystem::is_regular_file(path)) throw Error(path + ": cannot open file");
+  const uint64_t size = std::filesystem::file_size(path);
+  if (ext == "glb") {
+    std::array<uint8_t, 20> head{};
+    std::ifstream in(path, std::ios::binary);
+    in.read(reinterpret_cast<char*>(head.data()), head.size());
+    checkGlbLengths(std::span<const uint8_t>(head.data(), static_cast<size_t>(in.gcount())), size,
+                    path);
+  }
   // assimp may crash on a malformed file: a child reads it first (geometry/child_probe.hpp).
-  detail::probeInChild(path, [&] { FormatImporter(ext).get().ReadFile(path, kImportFlags); });
+  detail::probeInChild(
+      path, [&] { FormatImporter(ext).get().ReadFile(path, kImportFlags); }, probeLimits(size));
   FormatImporter importer(ext);
   const aiScene* scene = importer.get().ReadFile(path, kImportFlags);
   if (!scene) throw Error(path + ": cannot import (" + importerError(importer.get()) + ")");
@@ -336,10 +375,12 @@ ImportedAsset importAssetFromMemory(const std::vector<uint8_t>& bytes, const std
   if (!isAssimpExtension(extension))
     throw Error(name + ": unknown mesh format '" + extension + "'");
   if (bytes.empty()) throw Error(name + ": empty file");
+  if (extension == "glb") checkGlbLengths(bytes, bytes.size(), name);
   const auto read = [&](Assimp::Importer& importer) {
     return importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, extension.c_str());
   };
-  detail::probeInChild(name, [&] { read(FormatImporter(extension).get()); });
+  detail::probeInChild(
+      name, [&] { read(FormatImporter(extension).get()); }, probeLimits(bytes.size()));
   FormatImporter importer(extension);
   const aiScene* scene = read(importer.get());
   if (!scene) throw Error(name + ": cannot import (" + importerError(importer.get()) + ")");

@@ -234,6 +234,28 @@ TEST(AssetImport, BadPathsAndOptions) {
             "tri.obj: OBJ cannot be read from memory (an OBJ and its MTL are read from files)");
 }
 
+// A GLB whose header's lengths do not fit the file is refused before assimp allocates them (a
+// fuzzed 1 kB file claimed a 4 GB chunk: assimp took 4 GB and half a minute).
+TEST(AssetImport, GlbLengthsMustFitTheFile) {
+  auto glb = [](uint32_t total, uint32_t chunk) {
+    std::vector<uint8_t> bytes(40, ' ');
+    const uint32_t words[] = {0x46546C67u, 2, total, chunk, 0x4E4F534Au};  // "glTF", "JSON"
+    for (size_t w = 0; w < 5; ++w)
+      for (size_t k = 0; k < 4; ++k) bytes[4 * w + k] = static_cast<uint8_t>(words[w] >> (8 * k));
+    return bytes;
+  };
+  EXPECT_EQ(test::errorOf([&] { importAssetFromMemory(glb(1000, 20), "big", "glb"); }),
+            "big: the GLB header gives a length of 1000 bytes, but the file has 40");
+  EXPECT_EQ(test::errorOf([&] { importAssetFromMemory(glb(40, 0x04040404u), "chunk", "glb"); }),
+            "chunk: the GLB's first chunk claims 67372036 bytes, more than the file's 40 hold");
+  const std::filesystem::path path = std::filesystem::path(testing::TempDir()) / "huge_chunk.glb";
+  const std::vector<uint8_t> bytes = glb(40, 0xFFFFFFF0u);
+  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), 40);
+  EXPECT_EQ(importError(path.string()),
+            path.string() + ": the GLB's first chunk claims 4294967280 bytes, more than the " +
+                "file's 40 hold");
+}
+
 // A file is read only as the format its extension names: assimp would otherwise guess another
 // format from the content (an STL here; tests/fuzz found a reader that then allocated gigabytes).
 TEST(AssetImport, ContentOfAnotherFormatIsNotGuessed) {

@@ -1,12 +1,14 @@
-// The child-process guard for untrusted parsers: a crash or a hang becomes an error naming the
-// input; finished work, thrown errors included, lets the caller go on.
+// The child-process guard for untrusted parsers: a crash, a hang or a runaway allocation becomes
+// an error naming the input; finished work, thrown errors included, lets the caller go on.
 #include "geometry/child_probe.hpp"
 
 #include <gtest/gtest.h>
 
 #include <csignal>
+#include <cstdlib>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include "support/test_support.hpp"
 
@@ -29,11 +31,28 @@ TEST(ChildProbe, ACrashIsAnErrorNamingTheInput) {
 
 TEST(ChildProbe, AHangIsKilledAndNamed) {
   const std::string message = errorOf([] {
-    probeInChild(
-        "slow.gltf", [] { std::this_thread::sleep_for(std::chrono::seconds(30)); },
-        std::chrono::milliseconds(200));
+    probeInChild("slow.gltf", [] { std::this_thread::sleep_for(std::chrono::seconds(30)); },
+                 {.time = std::chrono::milliseconds(200)});
   });
   EXPECT_EQ(message, "slow.gltf: reading it did not finish within 0.2 s (the file is malformed)");
+}
+
+TEST(ChildProbe, ARunawayAllocationIsKilledAndNamed) {
+  ProbeLimits limits;
+  limits.memory_bytes = size_t{64} << 20;
+  const std::string message = errorOf([&] {
+    probeInChild(
+        "huge.glb",
+        [] {
+          std::vector<char> filled(size_t{256} << 20, 1);  // touched: resident
+          std::this_thread::sleep_for(std::chrono::seconds(30));
+          if (filled[12345] != 1) std::abort();
+        },
+        limits);
+  });
+  EXPECT_EQ(message,
+            "huge.glb: reading it took more than 64 MB of memory (the file is malformed, or too "
+            "large to read)");
 }
 
 }  // namespace
