@@ -81,34 +81,14 @@ SignedDistanceField::Sample primitiveSample(const Shape& shape, const Vec3& p) {
 }
 
 namespace {
-// beyondPrimitive's margin: far above the rounding of the exact distances.
+// The bounds' margin: far above the rounding of the exact distances, so that a point called
+// beyond would be rejected by primitiveSample too.
 constexpr double kGrow = 1.0 + 1e-9;
 }  // namespace
 
-bool beyondPrimitive(const Shape& shape, const Vec3& p, double reach) {
-  // Squared distances against (radius + reach)^2 grown far beyond the rounding of the exact
-  // distances, so that a point this calls beyond would be rejected by primitiveSample too.
-  if (!(reach >= 0)) return false;
-  const auto farther = [&](double squared, double radius) {
-    return squared > kGrow * (radius + reach) * (radius + reach);
-  };
-  switch (shape.type) {
-    case ShapeType::Sphere:
-      return farther(p.squaredNorm(), shape.radius);
-    case ShapeType::Capsule:
-      return farther(
-          (p - Vec3(0, 0, std::clamp(p.z(), -shape.half_height, shape.half_height))).squaredNorm(),
-          shape.radius);
-    case ShapeType::Cylinder:
-      return farther(p.x() * p.x() + p.y() * p.y(), shape.radius) ||
-             std::abs(p.z()) > kGrow * (shape.half_height + reach);
-    default:
-      return false;  // a box's bounds already hold its points
-  }
-}
-
 PrimitiveReach::PrimitiveReach(const Shape& shape, double reach) {
-  // beyondPrimitive's bounds; an invalid reach leaves every point to the exact distance.
+  // Squared distances against (radius + reach)^2, grown; an invalid reach leaves every point
+  // to the exact distance.
   if (!(reach >= 0)) return;
   type_ = shape.type;
   radius2_ = lanes::splat(kGrow * (shape.radius + reach) * (shape.radius + reach));

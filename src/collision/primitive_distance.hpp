@@ -14,12 +14,10 @@ bool hasPrimitiveDistance(ShapeType type);
 // Signed distance (< 0 inside) and outward unit gradient at p (shape frame); `triangle` is -1.
 SignedDistanceField::Sample primitiveSample(const Shape& shape, const Vec3& p);
 
-// True when p (shape frame) lies certainly farther than `reach` from the primitive, so that
+// Whether points (shape frame) lie certainly farther than `reach` from the primitive, so that
 // primitiveSample would give a distance of at least `reach`: a test of a few products that
-// lets a query skip the exact distance of most far points with the same outcome.
-bool beyondPrimitive(const Shape& shape, const Vec3& p, double reach);
-
-// beyondPrimitive for two points at once, one per lane, its bounds worked out once.
+// lets a query skip the exact distance of most far points with the same outcome. Two points
+// at once, one per lane, or one; the bounds are worked out once.
 class PrimitiveReach {
  public:
   PrimitiveReach() = default;  // nothing is beyond
@@ -39,6 +37,7 @@ class PrimitiveReach {
         return lanes::none();
     }
   }
+  bool beyond(const Vec3& p) const { return lanes::any(beyond(lanes::splat(p))); }
 
  private:
   ShapeType type_ = ShapeType::Box;  // a box (or none): its bounds already hold its points

@@ -77,7 +77,7 @@ class FieldDistance {
   // True when every point within `radius` of `centre` lies certainly farther than the reach
   // from the primitive (a block of points skipped whole); a grid gives false.
   bool beyond(const Vec3& centre, double radius) const {
-    return primitive_ != nullptr && beyondPrimitive(*primitive_, centre, reach_ + radius);
+    return primitive_ != nullptr && PrimitiveReach(*primitive_, reach_ + radius).beyond(centre);
   }
   // Per lane, whether the point lies certainly farther than the reach (a grid: never).
   lanes::Mask beyond(const lanes::Lanes3& p) const { return lane_reach_.beyond(p); }

@@ -60,7 +60,7 @@ TEST(PrimitiveDistance, BeyondOnlyWhereTheDistanceIsAtLeastTheReach) {
       for (double z = -0.4; z <= 0.4; z += 0.01) {
         const Vec3 p(x, 0.3 * x, z);
         const double distance = primitiveSample(shape, p).distance;
-        const bool beyond = beyondPrimitive(shape, p, reach);
+        const bool beyond = PrimitiveReach(shape, reach).beyond(p);
         if (beyond) {
           EXPECT_GE(distance, reach) << p.transpose();
         }
@@ -70,8 +70,9 @@ TEST(PrimitiveDistance, BeyondOnlyWhereTheDistanceIsAtLeastTheReach) {
     EXPECT_GT(far, 1000);
     EXPECT_EQ(called, far) << static_cast<int>(type);
   }
-  EXPECT_FALSE(beyondPrimitive(primitive(ShapeType::Box), Vec3(5, 5, 5), 0.0));
-  EXPECT_FALSE(beyondPrimitive(primitive(ShapeType::Sphere), Vec3(5, 5, 5), -1.0));
+  EXPECT_FALSE(PrimitiveReach(primitive(ShapeType::Box), 0.0).beyond(Vec3(5, 5, 5)));
+  EXPECT_FALSE(PrimitiveReach(primitive(ShapeType::Sphere), -1.0).beyond(Vec3(5, 5, 5)));
+  EXPECT_FALSE(PrimitiveReach().beyond(Vec3(5, 5, 5)));
 }
 
 }  // namespace
