@@ -41,20 +41,27 @@ constexpr size_t kChunk = 1024;
   return total;
 }
 
+// Chunk outer, direction inner: the chunk is read from L1 once per direction.
+[[gnu::always_inline]] inline void sweepBody(std::span<const float> gx, std::span<const float> gy,
+                                             std::span<const Vec2> directions,
+                                             std::span<double> sums) {
+  for (size_t base = 0; base < gx.size(); base += kChunk) {
+    const size_t len = std::min(kChunk, gx.size() - base);
+    for (size_t k = 0; k < directions.size(); ++k) {
+      const float dx = static_cast<float>(directions[k].x());
+      const float dy = static_cast<float>(directions[k].y());
+      sums[k] += chunkSumBody(gx.data() + base, gy.data() + base, len, dx, dy);
+    }
+  }
+}
+
 #if ASPERITY_AVX2_COPIES
 // The AVX2 copy (math/simd.hpp): 16 partial sums in two registers.
-ASPERITY_TARGET_AVX2 double chunkSumAvx2(const float* gx, const float* gy, size_t len, float dx,
-                                         float dy) {
-  return chunkSumBody(gx, gy, len, dx, dy);
+ASPERITY_TARGET_AVX2 void sweepAvx2(std::span<const float> gx, std::span<const float> gy,
+                                    std::span<const Vec2> directions, std::span<double> sums) {
+  sweepBody(gx, gy, directions, sums);
 }
 #endif
-
-double chunkSum(const float* gx, const float* gy, size_t len, float dx, float dy) {
-#if ASPERITY_AVX2_COPIES
-  if (simd::avx2()) return chunkSumAvx2(gx, gy, len, dx, dy);
-#endif
-  return chunkSumBody(gx, gy, len, dx, dy);
-}
 
 }  // namespace
 
@@ -66,15 +73,10 @@ void accumulateDirectionalSums(std::span<const float> gx, std::span<const float>
                 ", gy " + std::to_string(gy.size()) + ", directions " +
                 std::to_string(directions.size()) + ", sums " + std::to_string(sums.size()) + ")");
   }
-  // Chunk outer, direction inner: the chunk is read from L1 once per direction.
-  for (size_t base = 0; base < gx.size(); base += kChunk) {
-    const size_t len = std::min(kChunk, gx.size() - base);
-    for (size_t k = 0; k < directions.size(); ++k) {
-      const float dx = static_cast<float>(directions[k].x());
-      const float dy = static_cast<float>(directions[k].y());
-      sums[k] += chunkSum(gx.data() + base, gy.data() + base, len, dx, dy);
-    }
-  }
+#if ASPERITY_AVX2_COPIES
+  if (simd::avx2()) return sweepAvx2(gx, gy, directions, sums);
+#endif
+  sweepBody(gx, gy, directions, sums);
 }
 
 }  // namespace asperity
