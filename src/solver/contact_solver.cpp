@@ -137,13 +137,13 @@ void ContactSolver::prepareContact(const Contact& c, ContactRow& row) const {
 }
 
 void ContactSolver::setContacts(std::span<const Contact> contacts, bool friction) {
-  // Rows and limit surfaces in one pass over the contacts.
-  makeRows(contacts, friction, friction);
-  completeRows(contacts);
+  placeRows(contacts, friction);
+  fillRows(contacts, true, friction, true);
 }
 
 void ContactSolver::setContactRows(std::span<const Contact> contacts) {
-  makeRows(contacts, true, false);
+  placeRows(contacts, true);
+  fillRows(contacts, true, false, false);
 }
 
 void ContactSolver::setContactLimits(std::span<const Contact> contacts) {
@@ -151,23 +151,28 @@ void ContactSolver::setContactLimits(std::span<const Contact> contacts) {
     throw Error("solver: setContactLimits got " + std::to_string(contacts.size()) +
                 " contacts, setContactRows had " + std::to_string(rows_.size()));
   }
-  forEachItem(pool_, contacts.size(), 64, [&](size_t i) { makeLimit(contacts[i], i); });
-  completeRows(contacts);
+  fillRows(contacts, false, true, true);
 }
 
-void ContactSolver::makeLimit(const Contact& contact, size_t i) {
+void ContactSolver::makeLimit(const Contact& contact, size_t row) {
   // The limit surface the settings choose (SPEC 4), from the contact's coefficients.
   std::visit(
       [&](auto& limits) {
         using Limit = typename std::decay_t<decltype(limits)>::value_type;
-        limits[i] = Limit::fromContact(contact.mu, settings_.coulomb_mu);
+        limits[row] = Limit::fromContact(contact.mu, settings_.coulomb_mu);
       },
       limits_);
 }
 
-void ContactSolver::makeRows(std::span<const Contact> contacts, bool friction, bool limits) {
+void ContactSolver::placeRows(std::span<const Contact> contacts, bool friction) {
   friction_ = friction;
   const size_t n = contacts.size();
+  scheduleRows(contacts);
+  // Rows and limit surfaces are stored in sweep order: each sweep streams through memory front
+  // to back, so the prefetcher hides the misses once the rows outgrow the cache. slot_ maps a
+  // contact to its row.
+  slot_.resize(n);
+  for (size_t k = 0; k < n; ++k) slot_[static_cast<size_t>(order_[k])] = static_cast<int>(k);
   rows_.resize(n);
   std::visit(
       [&](auto& surfaces) {
@@ -175,32 +180,31 @@ void ContactSolver::makeRows(std::span<const Contact> contacts, bool friction, b
         if (friction) surfaces.resize(n);
       },
       limits_);
-  // Each contact's row and, when asked, its limit surface.
-  forEachItem(pool_, n, 64, [&](size_t i) {
-    prepareContact(contacts[i], rows_[i]);
-    if (limits) makeLimit(contacts[i], i);
-  });
 }
 
-void ContactSolver::completeRows(std::span<const Contact> contacts) {
+void ContactSolver::fillRows(std::span<const Contact> contacts, bool rows, bool limits, bool warm) {
+  // One pass over the contacts, in runs on the pool, each contact written into its own slot.
+  // Each run has its own walking cursor for the warm start: findCached's matches do not
+  // depend on where the cursor was.
+  const bool warm_start = warm && settings_.warm_starting;
+  const auto run = [&](size_t first, size_t last) {
+    size_t cursor = 0;
+    for (size_t i = first; i < last; ++i) {
+      const auto row = static_cast<size_t>(slot_[i]);
+      if (rows) prepareContact(contacts[i], rows_[row]);
+      if (limits) makeLimit(contacts[i], row);
+      if (!warm_start) continue;
+      if (const Cached* cached = findCached(contacts[i], cursor))
+        warmStartRow(*cached, rows_[row], row);
+    }
+  };
+  constexpr size_t kRun = 64;
   const size_t n = contacts.size();
-  if (settings_.warm_starting) {
-    // Runs of contacts on the pool, each with its own walking cursor: findCached's matches do
-    // not depend on where the cursor was.
-    const auto run = [&](size_t first, size_t last) {
-      size_t cursor = 0;
-      for (size_t i = first; i < last; ++i)
-        if (const Cached* cached = findCached(contacts[i], cursor))
-          warmStartRow(*cached, rows_[i], i);
-    };
-    forEachOn(pool_, (n + kParallelRows - 1) / kParallelRows, 1,
-              [&](size_t k) { run(k * kParallelRows, std::min(n, (k + 1) * kParallelRows)); });
-  }
-  scheduleRows();
-  storeInSweepOrder();
+  forEachOn(n >= kParallelRows ? pool_ : nullptr, (n + kRun - 1) / kRun, 1,
+            [&](size_t k) { run(k * kRun, std::min(n, (k + 1) * kRun)); });
 }
 
-void ContactSolver::scheduleRows() {
+void ContactSolver::scheduleRows(std::span<const Contact> contacts) {
   // The sweep order: input order, except that a row sharing a moving body with the row just
   // before it waits in a FIFO until a row without that dependency has gone first. Consecutive
   // rows then rarely touch the same velocities, so the processor overlaps them (the four
@@ -208,19 +212,19 @@ void ContactSolver::scheduleRows() {
   order_.clear();
   pending_.clear();
   size_t head = 0;
-  int last_a = -1, last_b = -1;
+  BodyId last_a = kNoBody, last_b = kNoBody;
   auto conflicts = [&](int i) {
-    const ContactRow& r = rows_[static_cast<size_t>(i)];
-    auto moving = [&](int body) { return inv_mass_[static_cast<size_t>(body)] > 0.0; };
-    return (moving(r.a) && (r.a == last_a || r.a == last_b)) ||
-           (moving(r.b) && (r.b == last_a || r.b == last_b));
+    const Contact& c = contacts[static_cast<size_t>(i)];
+    auto moving = [&](BodyId body) { return inv_mass_[body] > 0.0; };
+    return (moving(c.body_a) && (c.body_a == last_a || c.body_a == last_b)) ||
+           (moving(c.body_b) && (c.body_b == last_a || c.body_b == last_b));
   };
   auto emit = [&](int i) {
     order_.push_back(i);
-    last_a = rows_[static_cast<size_t>(i)].a;
-    last_b = rows_[static_cast<size_t>(i)].b;
+    last_a = contacts[static_cast<size_t>(i)].body_a;
+    last_b = contacts[static_cast<size_t>(i)].body_b;
   };
-  for (int i = 0; i < static_cast<int>(rows_.size()); ++i) {
+  for (int i = 0; i < static_cast<int>(contacts.size()); ++i) {
     if (head < pending_.size() && !conflicts(pending_[head])) emit(pending_[head++]);
     if (conflicts(i)) {
       pending_.push_back(i);
@@ -229,33 +233,6 @@ void ContactSolver::scheduleRows() {
     }
   }
   while (head < pending_.size()) emit(pending_[head++]);
-}
-
-void ContactSolver::storeInSweepOrder() {
-  // Rows and limits stored in sweep order: each sweep streams through memory front to back,
-  // so the prefetcher hides the misses once the rows outgrow the cache. slot_ maps a contact
-  // to its row. Each slot is written once, so the copies may run on the pool.
-  const size_t n = rows_.size();
-  slot_.resize(n);
-  sorted_.resize(n);
-  forEachItem(pool_, n, 256, [&](size_t k) {
-    const size_t i = static_cast<size_t>(order_[k]);
-    slot_[i] = static_cast<int>(k);
-    sorted_[k] = rows_[i];
-  });
-  rows_.swap(sorted_);
-  auto permute = [&](auto& limits) {
-    if (limits.size() != n) return;
-    // Into the spare vector of the same kind, kept from step to step.
-    using Limits = std::remove_reference_t<decltype(limits)>;
-    if (!std::holds_alternative<Limits>(sorted_limits_)) sorted_limits_.template emplace<Limits>();
-    Limits& sorted = std::get<Limits>(sorted_limits_);
-    sorted.resize(n);
-    forEachItem(pool_, n, 256,
-                [&](size_t k) { sorted[k] = std::move(limits[static_cast<size_t>(order_[k])]); });
-    limits.swap(sorted);
-  };
-  std::visit(permute, limits_);
 }
 
 bool ContactSolver::Cached::operator<(const Cached& o) const {
@@ -280,7 +257,7 @@ const ContactSolver::Cached* ContactSolver::findCached(const Contact& c, size_t&
   return &cache_[hit];
 }
 
-void ContactSolver::warmStartRow(const Cached& cached, ContactRow& row, size_t index) const {
+void ContactSolver::warmStartRow(const Cached& cached, ContactRow& row, size_t slot) const {
   // Same contact last step: reuse its impulses, the tangential one re-expressed in this
   // step's frame and projected on this step's limit surface.
   const auto range = std::make_pair(&cached, &cached + 1);
@@ -289,7 +266,7 @@ void ContactSolver::warmStartRow(const Cached& cached, ContactRow& row, size_t i
   const Vec2 tb(range.first->tangential.dot(row.t),
                 range.first->tangential.dot(row.n.cross(row.t)));
   const Vec2 projected = std::visit(
-      [&](const auto& limits) { return limits[index].project(tb, row.lambda_n); }, limits_);
+      [&](const auto& limits) { return limits[slot].project(tb, row.lambda_n); }, limits_);
   row.lambda_t = projected.x();
   row.lambda_b = projected.y();
 }

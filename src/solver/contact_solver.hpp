@@ -69,9 +69,9 @@ class ContactSolver {
   // Joint rows (anchors in world from the bodies' poses).
   void setJoints(std::span<const SolverJoint> joints);
   // Contact rows. With friction, contacts carry their frame (t, b) and mu; without, only the
-  // normal rows are solved (frame mode Auto's first pass). Rows, limit surfaces, warm starting
-  // (in runs of contacts) and the copy into sweep order run on the pool; the sweep order itself
-  // is chosen on the calling thread.
+  // normal rows are solved (frame mode Auto's first pass). The sweep order is chosen on the
+  // calling thread; then rows, limit surfaces and warm starting, each written straight into
+  // its slot in that order, run in one pass over the contacts on the pool.
   void setContacts(std::span<const Contact> contacts, bool friction);
   // setContacts(contacts, true) in two calls, so that the rows can be set up while the
   // coefficients are still being computed (on a GPU): setContactRows reads only the contacts'
@@ -172,15 +172,15 @@ class ContactSolver {
   };
 
   void prepareContact(const Contact& c, ContactRow& row) const;
-  void makeLimit(const Contact& contact, size_t i);
-  // The parts of setContacts: rows (and, with `limits`, limit surfaces) per contact; then
-  // warm starting, the sweep order and the copy into it.
-  void makeRows(std::span<const Contact> contacts, bool friction, bool limits);
-  void completeRows(std::span<const Contact> contacts);
+  void makeLimit(const Contact& contact, size_t row);
+  // The parts of setContacts: the sweep order and room for the rows (and, with friction, their
+  // limit surfaces); then, per contact into its slot, its row, its limit surface and its warm
+  // start, as asked.
+  void placeRows(std::span<const Contact> contacts, bool friction);
+  void fillRows(std::span<const Contact> contacts, bool rows, bool limits, bool warm);
+  void scheduleRows(std::span<const Contact> contacts);
   const Cached* findCached(const Contact& c, size_t& cursor) const;
-  void warmStartRow(const Cached& cached, ContactRow& row, size_t index) const;
-  void scheduleRows();
-  void storeInSweepOrder();
+  void warmStartRow(const Cached& cached, ContactRow& row, size_t slot) const;
   void warmStart();
   void warmStartJoints();
   void addAngularRow(int a, int b, int joint, int slot, const Vec3& u, double target);
@@ -224,12 +224,10 @@ class ContactSolver {
   std::vector<Quat> rotation_;
   // Rows.
   Rows rows_;
-  std::vector<int> order_;      // sweep order of the contact rows (see scheduleRows)
-  std::vector<int> pending_;    // scratch of scheduleRows
-  std::vector<int> slot_;       // contact i's row in rows_ (rows_ is stored in sweep order)
-  Rows sorted_;                 // scratch of storeInSweepOrder
-  LimitVectors limits_;         // one per contact row, of the settings' limit surface
-  LimitVectors sorted_limits_;  // spare of the same kind for the copy into sweep order
+  std::vector<int> order_;    // sweep order of the contact rows (see scheduleRows)
+  std::vector<int> pending_;  // scratch of scheduleRows
+  std::vector<int> slot_;     // contact i's row in rows_ (rows_ is stored in sweep order)
+  LimitVectors limits_;       // one per contact row, of the settings' limit surface
   bool friction_ = true;
   bool warm_started_ = false;
   std::vector<BallRow> balls_;
