@@ -18,10 +18,20 @@ bool sameSettings(const FrictionSettings& x, const FrictionSettings& y) {
          x.reuse_pixels == y.reuse_pixels;
 }
 
+// World to a body's frame, as a matrix: a contact's four vectors are moved by one rotation
+// made once, cheaper than four quaternion products.
+struct ToBody {
+  Mat3 rotation;
+  Vec3 origin;
+  explicit ToBody(const Body& body)
+      : rotation(body.pose.rotation.conjugate().toRotationMatrix()), origin(body.pose.position) {}
+  Vec3 point(const Vec3& world) const { return rotation * (world - origin); }
+};
+
 // The contact point and its points w/2 along t and b, in a body's frame.
-std::array<Vec3, 3> framePoints(const Body& body, const Contact& c, double half_width) {
-  return {body.pose.applyInverse(c.point), body.pose.applyInverse(c.point + half_width * c.t),
-          body.pose.applyInverse(c.point + half_width * c.b)};
+std::array<Vec3, 3> framePoints(const ToBody& body, const Contact& c, double half_width) {
+  return {body.point(c.point), body.point(c.point + half_width * c.t),
+          body.point(c.point + half_width * c.b)};
 }
 
 // How far a body moved since the sample, relative to the contact frame: the largest
@@ -35,8 +45,9 @@ struct Motion {
 
 Motion motionOf(const Body& body, const Contact& c, const std::array<Vec3, 3>& then,
                 double half_width) {
-  const std::array<Vec3, 3> now = framePoints(body, c, half_width);
-  const Vec3 n = body.pose.rotation.conjugate() * c.normal;
+  const ToBody to_body(body);
+  const std::array<Vec3, 3> now = framePoints(to_body, c, half_width);
+  const Vec3 n = to_body.rotation * c.normal;
   std::array<double, 3> d{};
   Motion m;
   for (size_t i = 0; i < 3; ++i) {
@@ -92,18 +103,22 @@ PatchReuse::Key PatchReuse::keyOf(const Contact& c) {
   return {c.body_a, c.body_b, c.shape_a, c.shape_b, c.key};
 }
 
-const PatchReuse::Sample* PatchReuse::find(const Key& key) const {
-  const auto it = std::lower_bound(keys_.begin(), keys_.end(), key);
-  return it != keys_.end() && *it == key ? &samples_[static_cast<size_t>(it - keys_.begin())]
-                                         : nullptr;
+size_t PatchReuse::find(const std::vector<Key>& keys, const Key& key, size_t& cursor) {
+  // Contacts arrive sorted by their identity nearly always: the cursor's entry is the one
+  // looked for, or a binary search finds it.
+  if (cursor >= keys.size() || keys[cursor] != key) {
+    cursor = static_cast<size_t>(std::lower_bound(keys.begin(), keys.end(), key) - keys.begin());
+    if (cursor == keys.size() || keys[cursor] != key) return kNone;
+  }
+  return cursor++;
 }
 
 PatchReuse::Sample PatchReuse::record(std::span<const Body> bodies, const Contact& c,
                                       const std::array<DepthMargins, 2>& depth) const {
   const double half = 0.5 * settings_.patch_width;
   Sample s;
-  s.on_a = framePoints(bodies[c.body_a], c, half);
-  s.on_b = framePoints(bodies[c.body_b], c, half);
+  s.on_a = framePoints(ToBody(bodies[c.body_a]), c, half);
+  s.on_b = framePoints(ToBody(bodies[c.body_b]), c, half);
   s.phi = c.phi;
   s.depth = {lessRounding(depth[0], settings_.patch_width),
              lessRounding(depth[1], settings_.patch_width)};
@@ -127,11 +142,12 @@ void PatchReuse::reuse(std::span<const Body> bodies, std::span<Contact> contacts
   // Along the normal: the same share of the depth clip's margin (0.01 w, SPEC 3).
   const Tolerance tol{tolerance_, settings.reuse_pixels * 0.01 * settings.patch_width};
   const double half = 0.5 * settings.patch_width;
+  size_t cursor = 0;
   for (size_t i = 0; i < contacts.size(); ++i) {
     Contact& c = contacts[i];
-    const Sample* found = find(keyOf(c));
-    if (found == nullptr) continue;
-    const Sample& s = *found;
+    const size_t found = find(keys_, keyOf(c), cursor);
+    if (found == kNone) continue;
+    const Sample& s = samples_[found];
     const Motion a = motionOf(bodies[c.body_a], c, s.on_a, half);
     const Motion b = motionOf(bodies[c.body_b], c, s.on_b, half);
     if (!holds(a, b, s.phi, c.phi, s.depth, tol)) continue;
@@ -149,19 +165,21 @@ void PatchReuse::remember(std::span<const Body> bodies, std::span<const Contact>
   keys_.clear();
   samples_.clear();
   if (!(tolerance_ > 0.0)) return;
-  // By key, then contact order: of two contacts with one identity the first is kept.
+  // By key, then contact order: of two contacts with one identity the first is kept. The
+  // contacts are nearly always in key order already (the collision stage sorts them by bodies
+  // and key): then they are taken as they come.
   order_.clear();
   for (size_t i = 0; i < contacts.size(); ++i)
     order_.emplace_back(keyOf(contacts[i]), static_cast<uint32_t>(i));
-  std::sort(order_.begin(), order_.end());
+  if (!std::is_sorted(order_.begin(), order_.end())) std::sort(order_.begin(), order_.end());
+  size_t cursor = 0;
   for (const auto& [key, i] : order_) {
     if (!keys_.empty() && keys_.back() == key) continue;
     // The last step's records are in next_ now; a reused contact keeps its original one.
-    const auto old = std::lower_bound(next_keys_.begin(), next_keys_.end(), key);
-    const bool keep = reused[i] && old != next_keys_.end() && *old == key;
+    const size_t old = reused[i] ? find(next_keys_, key, cursor) : kNone;
     keys_.push_back(key);
-    samples_.push_back(keep ? next_samples_[static_cast<size_t>(old - next_keys_.begin())]
-                            : record(bodies, contacts[i], margins_[i]));
+    samples_.push_back(old != kNone ? next_samples_[old]
+                                    : record(bodies, contacts[i], margins_[i]));
   }
 }
 

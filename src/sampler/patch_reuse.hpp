@@ -55,7 +55,10 @@ class PatchReuse {
   static Key keyOf(const Contact& c);
   Sample record(std::span<const Body> bodies, const Contact& c,
                 const std::array<DepthMargins, 2>& depth) const;
-  const Sample* find(const Key& key) const;
+  // The index of `key` in sorted `keys` (kNone when absent), starting the search where
+  // `cursor` stands and leaving it after the entry found.
+  static constexpr size_t kNone = ~size_t{0};
+  static size_t find(const std::vector<Key>& keys, const Key& key, size_t& cursor);
 
   // keys_[i] is samples_[i]'s identity, sorted; the keys are apart from the (large) samples so
   // that a lookup touches few cache lines. The next_ buffers are swapped in each step and the
