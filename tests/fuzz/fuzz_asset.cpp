@@ -1,6 +1,6 @@
-// libFuzzer target: asset bytes through the importer from memory (assimp: glTF text and glb;
-// OBJ goes through tinyobjloader from files, fuzz_obj's), embedded textures decoded. The first
-// byte picks the format; every rejection must be an asperity::Error naming the asset, anything
+// libFuzzer target: asset bytes through the importer from memory (assimp: every format it reads
+// for us, glTF text and glb, FBX, COLLADA, 3DS; OBJ goes through tinyobjloader from files,
+// fuzz_obj's), embedded textures decoded. The first byte picks the format; every rejection must be an asperity::Error naming the asset, anything
 // else (a crash, a report, another exception) is a finding.
 #include <cstddef>
 #include <cstdint>
@@ -12,8 +12,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size < 1) return 0;
-  static const char* const kFormats[] = {"glb", "gltf"};
-  const std::string format = kFormats[data[0] % 2];
+  static const char* const kFormats[] = {"glb", "gltf", "fbx", "dae", "3ds"};
+  const std::string format = kFormats[data[0] % 5];
   const std::vector<uint8_t> bytes(data + 1, data + size);
   try {
     const asperity::ImportedAsset asset =
