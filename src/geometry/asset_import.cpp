@@ -329,6 +329,20 @@ detail::ProbeLimits probeLimits(uint64_t bytes) {
   return limits;
 }
 
+// The scene that `read` (a ReadFile or ReadFileFromMemory on the importer it is given) makes of
+// the asset `name` of `bytes` bytes and `extension`'s format, held by `importer`. assimp may
+// crash, hang or run away with memory on a malformed file: a child reads it first
+// (geometry/child_probe.hpp).
+template <class Read>
+const aiScene& readGuarded(FormatImporter& importer, const std::string& name,
+                           const std::string& extension, uint64_t bytes, const Read& read) {
+  detail::probeInChild(
+      name, [&] { read(FormatImporter(extension).get()); }, probeLimits(bytes));
+  const aiScene* scene = read(importer.get());
+  if (!scene) throw Error(name + ": cannot import (" + importerError(importer.get()) + ")");
+  return *scene;
+}
+
 }  // namespace
 
 bool isAssimpExtension(const std::string& extension) {
@@ -353,15 +367,13 @@ ImportedAsset importAsset(const std::string& path, const AssetImportOptions& opt
     checkGlbLengths(std::span<const uint8_t>(head.data(), static_cast<size_t>(in.gcount())), size,
                     path);
   }
-  // assimp may crash on a malformed file: a child reads it first (geometry/child_probe.hpp).
-  detail::probeInChild(
-      path, [&] { FormatImporter(ext).get().ReadFile(path, kImportFlags); }, probeLimits(size));
   FormatImporter importer(ext);
-  const aiScene* scene = importer.get().ReadFile(path, kImportFlags);
-  if (!scene) throw Error(path + ": cannot import (" + importerError(importer.get()) + ")");
+  const aiScene& scene = readGuarded(importer, path, ext, size, [&](Assimp::Importer& reader) {
+    return reader.ReadFile(path, kImportFlags);
+  });
   const detail::Source src{path, std::filesystem::path(path).parent_path().string(),
                            ext == "gltf" || ext == "glb"};
-  return convert(*scene, src, options);
+  return convert(scene, src, options);
 }
 
 ImportedAsset importAssetFromMemory(const std::vector<uint8_t>& bytes, const std::string& name,
@@ -376,16 +388,14 @@ ImportedAsset importAssetFromMemory(const std::vector<uint8_t>& bytes, const std
     throw Error(name + ": unknown mesh format '" + extension + "'");
   if (bytes.empty()) throw Error(name + ": empty file");
   if (extension == "glb") checkGlbLengths(bytes, bytes.size(), name);
-  const auto read = [&](Assimp::Importer& importer) {
-    return importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, extension.c_str());
-  };
-  detail::probeInChild(
-      name, [&] { read(FormatImporter(extension).get()); }, probeLimits(bytes.size()));
   FormatImporter importer(extension);
-  const aiScene* scene = read(importer.get());
-  if (!scene) throw Error(name + ": cannot import (" + importerError(importer.get()) + ")");
+  const aiScene& scene =
+      readGuarded(importer, name, extension, bytes.size(), [&](Assimp::Importer& reader) {
+        return reader.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags,
+                                         extension.c_str());
+      });
   const detail::Source src{name, "", extension == "gltf" || extension == "glb"};
-  return convert(*scene, src, options);
+  return convert(scene, src, options);
 }
 
 }  // namespace asperity
