@@ -1,7 +1,8 @@
 // The OpenGL patch sampler per contact (SPEC 3) on this machine's OpenGL (llvmpipe without a
 // GPU): boxes resting on a textured plane, four corner contacts each, N = 4 and 16, R = 16, a
 // 1024 x 1024 RGBA8 atlas (2048 contacts per pass). Counters: time per contact, and the
-// provider's own split into patch (collect + render + read-back) and averaging.
+// provider's own split into patch (collect + render + read-back) and averaging. threads: the
+// pool that averages the read-back tiles (0 = every core; 1 = the calling thread).
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "asperity/sampler/gl_patch_sampler.hpp"
+#include "parallel/thread_pool.hpp"
 #include "sampler_bench_scene.hpp"
 
 namespace asperity {
@@ -17,6 +19,8 @@ namespace {
 void BM_GlBoxOnPlane(benchmark::State& state) {
   bench::SamplerScene scene = bench::boxesOnPlane(static_cast<int>(state.range(1)));
   GlPatchSampler sampler;
+  const ThreadPool pool(static_cast<int>(state.range(2)));
+  sampler.setThreadPool(&pool);
   FrictionSettings settings;
   settings.directions = static_cast<int>(state.range(0));
   sampler.computeCoefficients(scene.bodies, scene.contacts, settings);  // uploads textures
@@ -35,11 +39,14 @@ void BM_GlBoxOnPlane(benchmark::State& state) {
   state.SetLabel(sampler.renderer());
 }
 BENCHMARK(BM_GlBoxOnPlane)
-    ->ArgNames({"N", "contacts"})
-    ->Args({4, 100})
-    ->Args({4, 1000})
-    ->Args({16, 1000})
-    ->Args({4, 4000})
+    ->ArgNames({"N", "contacts", "threads"})
+    ->Args({4, 100, 1})
+    ->Args({4, 1000, 1})
+    ->Args({16, 1000, 1})
+    ->Args({4, 4000, 1})
+    ->Args({4, 1000, 0})
+    ->Args({16, 1000, 0})
+    ->Args({4, 4000, 0})
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 

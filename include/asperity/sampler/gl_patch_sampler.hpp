@@ -48,6 +48,9 @@ class GlPatchSampler : public FrictionProvider {
                          const FrictionSettings& settings) override;
   void finishCoefficients() override;
   bool runsAsynchronously() const override { return true; }
+  // The read-back tiles are averaged on `pool`'s threads, each contact by one thread (the same
+  // bits on any count); GL calls stay on the calling thread.
+  void setThreadPool(const ThreadPool* pool) override;
   double lastPatchTimeMs() const override;
   double lastAveragingTimeMs() const override;
   // Patch coherence as the cpu sampler's (FrictionSettings::reuse_pixels): contacts whose

@@ -16,6 +16,7 @@
 #include "asperity/friction/directions.hpp"
 #include "asperity/gl/context.hpp"
 #include "asperity/scene/friction_providers.hpp"
+#include "parallel/thread_pool.hpp"
 #include "sampler/gl/gl_patch_resources.hpp"
 #include "sampler/patch_common.hpp"
 #include "sampler/patch_reuse.hpp"
@@ -106,6 +107,7 @@ struct SavedState {
 
 struct GlPatchSampler::Impl {
   GlSamplerOptions options;
+  const ThreadPool* pool = nullptr;  // averages the read-back tiles (setThreadPool)
   std::unique_ptr<gl::GlContext> context;  // declared first: destroyed last
   glpatch::Atlas atlas;
   std::array<glpatch::Readback, 2> readbacks;
@@ -324,15 +326,17 @@ void GlPatchSampler::Impl::average(int slot, const FrictionSettings& settings) {
     v.byte_scale = settings.mu_max / 255.0f;
     return v;
   };
+  // The mapped read-back is plain memory: the pool's threads read it, each contact writing
+  // only its own coefficients; unmap waits for them, on this thread.
   const std::vector<PassContact>& contacts = pass_contacts[static_cast<size_t>(slot)];
-  for (size_t c = 0; c < contacts.size(); ++c) {
+  forEachOn(pool, contacts.size(), 16, [&](size_t c) {
     std::array<double, kMaxDirections> sums_a{}, sums_b{};
     const int count = patch::averageTiles(tileView(static_cast<int>(2 * c)),
                                           tileView(static_cast<int>(2 * c + 1)), r,
                                           settings.directions, sums_a.data(), sums_b.data());
     patch::finishContact(*contacts[c].contact, std::span<const double>(sums_a.data(), n),
                          std::span<const double>(sums_b.data(), n), count, contacts[c].gains);
-  }
+  });
   rb.unmap();
   averaging_ms += msSince(t0);
 }
@@ -350,6 +354,10 @@ GlPatchSampler::GlPatchSampler(const GlSamplerOptions& options) : impl_(std::mak
 
 GlPatchSampler::~GlPatchSampler() {
   if (impl_->context) impl_->context->makeCurrent();
+}
+
+void GlPatchSampler::setThreadPool(const ThreadPool* pool) {
+  impl_->pool = pool;
 }
 
 double GlPatchSampler::lastPatchTimeMs() const {

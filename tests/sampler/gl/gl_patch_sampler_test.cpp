@@ -8,6 +8,7 @@
 #include "asperity/gl/context.hpp"
 #include "asperity/sampler/cpu_patch_sampler.hpp"
 #include "asperity/scene/scene.hpp"
+#include "parallel/thread_pool.hpp"
 #include "sampler/sampler_suite.hpp"
 #include "support/test_support.hpp"
 
@@ -183,6 +184,30 @@ TEST(GlPatchSampler, StartedCallFinishesWithTheNumbersOfOneCall) {
   glDeleteFramebuffers(1, &fbo);
 }
 
+TEST(GlPatchSampler, AveragesOnThePoolWithTheBitsOfOneThread) {
+  // Several passes, each averaged on four threads, one contact per thread at a time: the same
+  // coefficients, bit for bit, as on the calling thread alone.
+  Scene scene{{planeBody(roughMap(32, 1), 0.05, 1.0),
+               boxBody(Vec3(0.1, 0.1, 0.1), {Vec3(0, 0, 0.1)}, roughMap(32, 2), 0.08, 2.0)},
+              {}};
+  GlSamplerOptions o;
+  o.atlas_size = 64;  // 8 contacts a pass
+  GlPatchSampler alone(o), pooled(o);
+  const ThreadPool pool(4);
+  pooled.setThreadPool(&pool);
+  const FrictionSettings s = settings(8);
+  std::vector<Contact> one = corners(scene, 40), four = one;
+  alone.computeCoefficients(scene.bodies, one, s);
+  pooled.computeCoefficients(scene.bodies, four, s);
+  EXPECT_EQ(pooled.lastPassCount(), 5);
+  for (size_t i = 0; i < one.size(); ++i) {
+    EXPECT_GT(four[i].covered_pixels, 0) << "contact " << i;
+    EXPECT_EQ(four[i].covered_pixels, one[i].covered_pixels) << "contact " << i;
+    EXPECT_EQ(four[i].fallback, one[i].fallback) << "contact " << i;
+    for (int k = 0; k < 8; ++k) EXPECT_EQ(four[i].mu.mu[k], one[i].mu.mu[k]) << "contact " << i;
+  }
+}
+
 // The gl sampler handed each step whole, so the world does not overlap it with the solver.
 class WholeCalls : public FrictionProvider {
  public:
@@ -215,6 +240,24 @@ TEST(GlPatchSampler, WorldSetsUpTheSolverWhileItRendersWithTheSameBits) {
     ASSERT_EQ(overlapped->stateHash(), whole->stateHash()) << "step " << i;
   }
   EXPECT_GT(contacts, 0u);
+}
+
+TEST(GlPatchSampler, WorldStateIsTheSameOnOneAndFourThreads) {
+  // With the gl sampler too, the state hash does not depend on the thread count (SPEC 9): the
+  // pool averages the tiles, the calling thread keeps every GL call.
+  SceneDesc scene = loadScene(test::sourcePath("scenes/stacking.json"));
+  scene.sampler = "gl";
+  InstantiateOptions options;
+  addGlPatchSampler(options.providers);
+  const std::unique_ptr<World> one = instantiate(scene, options);
+  const std::unique_ptr<World> four = instantiate(scene, options);
+  four->settings().threads = 4;
+  for (int i = 0; i < 30; ++i) {
+    one->step();
+    four->step();
+    ASSERT_EQ(four->stateHash(), one->stateHash()) << "step " << i;
+  }
+  EXPECT_GT(one->contacts().size(), 0u);
 }
 
 TEST(GlPatchSampler, ReportsRendererAndRejectsBadAtlas) {
