@@ -232,27 +232,12 @@ void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::spa
   reuse_->remember(bodies, contacts, reused_);
 }
 
-void CpuPatchSampler::prepareMeshes(std::span<const Body> bodies,
-                                    std::span<const Contact> contacts) {
-  // Every mesh the contacts may rasterise, built here on the calling thread: the threads then
-  // only look the cache up, and share one BVH per mesh.
-  for (size_t i = 0; i < contacts.size(); ++i) {
-    if (reused_[i]) continue;
-    for (const Side side : {Side::A, Side::B}) {
-      const patch::ShapeRange range = patch::shapesOf(bodies, contacts[i], side);
-      for (int k = range.first; k < range.last; ++k) {
-        const Shape& shape = range.body->shapes[static_cast<size_t>(k)];
-        if (shape.type == ShapeType::TriangleMesh || shape.type == ShapeType::ConvexHull) {
-          meshes_->get(shape);
-        }
-      }
-    }
-  }
-}
-
 void CpuPatchSampler::sampleOnPool(std::span<const Body> bodies, std::span<Contact> contacts,
                                    const FrictionSettings& settings) {
-  prepareMeshes(bodies, contacts);
+  // Every mesh the contacts may rasterise is built here, on the calling thread: the threads
+  // then only look the cache up, and share one BVH per mesh.
+  for (size_t i = 0; i < contacts.size(); ++i)
+    if (!reused_[i]) patch::prepareMeshes(*meshes_, bodies, contacts[i], false);
   while (worker_states_.size() < static_cast<size_t>(pool_->concurrency()))
     worker_states_.push_back(std::make_unique<State>(*meshes_));
   for (auto& st : worker_states_) st->patch_ms = st->averaging_ms = 0.0;

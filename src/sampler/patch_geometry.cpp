@@ -7,6 +7,7 @@
 
 #include "asperity/error.hpp"
 #include "geometry/shape_mesh_internal.hpp"
+#include "sampler/patch_common.hpp"
 
 namespace asperity::patch {
 
@@ -234,6 +235,21 @@ const CachedMesh& MeshCache::get(const Shape& shape) {
   entry->smooth = curved || (shape.type == ShapeType::TriangleMesh && !shape.mesh->uvs.empty());
   entry->keep_alive = shape.mesh;
   return *entries_.emplace(key, std::move(entry)).first->second;
+}
+
+void prepareMeshes(MeshCache& meshes, std::span<const Body> bodies, const Contact& contact,
+                   bool meshed_curves) {
+  for (const Side side : {Side::A, Side::B}) {
+    const ShapeRange range = shapesOf(bodies, contact, side);
+    for (int k = range.first; k < range.last; ++k) {
+      const Shape& shape = range.body->shapes[static_cast<size_t>(k)];
+      const bool meshed = shape.type == ShapeType::TriangleMesh ||
+                          shape.type == ShapeType::ConvexHull;
+      const bool curved = shape.type == ShapeType::Sphere || shape.type == ShapeType::Capsule ||
+                          shape.type == ShapeType::Cylinder;
+      if (meshed || (meshed_curves && curved)) meshes.get(shape);
+    }
+  }
 }
 
 void rasteriseShape(const Volume& volume, const Shape& shape, const Transform& pose,

@@ -6,9 +6,11 @@
 
 #include <map>
 #include <memory>
+#include <span>
 #include <tuple>
 #include <vector>
 
+#include "asperity/collision/contact.hpp"
 #include "asperity/geometry/shape_mesh.hpp"
 #include "geometry/bvh.hpp"
 #include "sampler/patch_raster.hpp"
@@ -42,6 +44,12 @@ class MeshCache {
   using Key = std::tuple<const TriangleMeshData*, int, double, double, double, double>;
   std::map<Key, std::unique_ptr<CachedMesh>> entries_;
 };
+
+// Builds, on the calling thread, every cached mesh that sampling `contact` looks up: mesh and
+// hull shapes, and with `meshed_curves` (the GL sampler draws them as triangles) spheres,
+// capsules and cylinders too. Threads may then share the cache.
+void prepareMeshes(MeshCache& meshes, std::span<const Body> bodies, const Contact& contact,
+                   bool meshed_curves);
 
 // Scratch reused between contacts (no allocation per contact once warm).
 struct GeometryScratch {

@@ -50,7 +50,6 @@ class CpuPatchSampler : public FrictionProvider {
 
  private:
   struct State;
-  void prepareMeshes(std::span<const Body> bodies, std::span<const Contact> contacts);
   void sampleOnPool(std::span<const Body> bodies, std::span<Contact> contacts,
                     const FrictionSettings& settings);
 

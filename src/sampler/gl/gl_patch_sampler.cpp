@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -35,8 +36,10 @@ double msSince(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
-// A run of triangles of one surface of one contact with one material.
+// A run of triangles of one surface of one contact with one material. The surface's textures
+// become GL names (map, mask) on the calling thread, after the triangles are collected.
 struct Draw {
+  const Surface* surface = nullptr;
   GLuint map = 0, mask = 0;
   GLint first = 0;
   GLsizei count = 0;
@@ -61,6 +64,18 @@ struct PassContact {
   Contact* contact = nullptr;
   PatchGains gains;
 };
+
+// The triangles of a run of a pass's contacts, collected by one thread: its draws' firsts count
+// from the chunk's own first vertex until the chunks are joined in contact order.
+struct Chunk {
+  std::vector<patch::PatchVertex> vertices;
+  std::vector<TileVertex> tiles;
+  std::vector<Draw> draws;
+  patch::GeometryScratch scratch;
+  size_t base = 0;  // the chunk's first vertex in the pass's buffers
+};
+// Contacts per chunk: enough work to pay for a task, few enough to spread a pass.
+constexpr size_t kChunkContacts = 32;
 
 // The caller's GL state that a pass changes (for use_current_context), restored afterwards.
 struct SavedState {
@@ -117,9 +132,8 @@ struct GlPatchSampler::Impl {
   std::unique_ptr<gl::VertexArray> vao;
   std::unique_ptr<gl::Buffer> vbo, tile_vbo;
   patch::MeshCache meshes;
-  patch::GeometryScratch scratch;
-  std::vector<patch::PatchVertex> vertices;
-  std::vector<TileVertex> tile_vertices;
+  std::vector<Chunk> chunks;  // this pass's triangles, chunk_count of them in use
+  size_t chunk_count = 0, vertex_count = 0;
   std::vector<Draw> draws;
   // The draws grouped by material (batch), each batch's runs in firsts and counts.
   std::vector<size_t> order;
@@ -149,6 +163,11 @@ struct GlPatchSampler::Impl {
   void abandon();
   void collect(std::span<const Body> bodies, std::span<Contact* const> contacts,
                const FrictionSettings& settings, std::vector<PassContact>& out);
+  void collectChunk(std::span<const Body> bodies, std::span<Contact* const> contacts,
+                    size_t first_contact, const FrictionSettings& settings, Chunk& chunk,
+                    std::span<PassContact> out);
+  void upload(GLuint buffer, size_t vertex_size,
+              const std::function<const void*(const Chunk&)>& data) const;
   void batchByMaterial();
   void render(const FrictionSettings& settings);
   void average(int slot, const FrictionSettings& settings);
@@ -189,14 +208,48 @@ void GlPatchSampler::Impl::setupVertexArray() {
 void GlPatchSampler::Impl::collect(std::span<const Body> bodies, std::span<Contact* const> contacts,
                                    const FrictionSettings& settings,
                                    std::vector<PassContact>& out) {
-  vertices.clear();
-  tile_vertices.clear();
+  // The triangles of runs of contacts on the pool (the meshes they look up built first, here),
+  // then joined in contact order: the same buffer and draws as one thread makes.
+  if (pool) {
+    for (const Contact* c : contacts) patch::prepareMeshes(meshes, bodies, *c, true);
+  }
+  chunk_count = (contacts.size() + kChunkContacts - 1) / kChunkContacts;
+  if (chunks.size() < chunk_count) chunks.resize(chunk_count);
+  out.resize(contacts.size());
+  forEachOn(pool, chunk_count, 1, [&](size_t k) {
+    const size_t first = k * kChunkContacts;
+    const size_t count = std::min(kChunkContacts, contacts.size() - first);
+    collectChunk(bodies, contacts.subspan(first, count), first, settings, chunks[k],
+                 std::span(out).subspan(first, count));
+  });
   draws.clear();
-  out.clear();
+  vertex_count = 0;
+  for (size_t k = 0; k < chunk_count; ++k) {
+    Chunk& chunk = chunks[k];
+    chunk.base = vertex_count;
+    vertex_count += chunk.vertices.size();
+    for (Draw d : chunk.draws) {
+      const auto& map = d.surface->normal_map;
+      d.map = map && !map->empty() ? textures.normalMap(map) : 0;
+      d.mask = d.surface->mask ? textures.mask(d.surface->mask) : 0;
+      d.first += static_cast<GLint>(chunk.base);
+      draws.push_back(d);
+    }
+  }
+}
+
+void GlPatchSampler::Impl::collectChunk(std::span<const Body> bodies,
+                                        std::span<Contact* const> contacts, size_t first_contact,
+                                        const FrictionSettings& settings, Chunk& chunk,
+                                        std::span<PassContact> out) {
+  chunk.vertices.clear();
+  chunk.tiles.clear();
+  chunk.draws.clear();
   const int r = settings.patch_resolution, per_row = atlas.size() / r;
   // Contact c of the pass: A in tile 2c, B in tile 2c + 1; one draw per shape with triangles.
-  for (size_t c = 0; c < contacts.size(); ++c) {
-    Contact& contact = *contacts[c];
+  for (size_t i = 0; i < contacts.size(); ++i) {
+    Contact& contact = *contacts[i];
+    const size_t c = first_contact + i;
     const patch::Volume volume = patch::makeVolume(contact, settings);
     const patch::ShapeRange ranges[2] = {patch::shapesOf(bodies, contact, Side::A),
                                          patch::shapesOf(bodies, contact, Side::B)};
@@ -204,26 +257,36 @@ void GlPatchSampler::Impl::collect(std::span<const Body> bodies, std::span<Conta
       const patch::ShapeRange& range = ranges[s];
       for (int k = range.first; k < range.last; ++k) {
         const Shape& shape = range.body->shapes[static_cast<size_t>(k)];
-        const size_t first = vertices.size();
+        const size_t first = chunk.vertices.size();
         patch::collectTriangles(volume, shape, patch::shapePose(*range.body, k),
-                                s == 0 ? Side::A : Side::B, meshes, scratch, vertices);
-        if (vertices.size() == first) continue;
+                                s == 0 ? Side::A : Side::B, meshes, chunk.scratch,
+                                chunk.vertices);
+        if (chunk.vertices.size() == first) continue;
         const int tile = static_cast<int>(2 * c) + s;
         const TileVertex tv{
             {static_cast<float>((tile % per_row) * r), static_cast<float>((tile / per_row) * r)},
             s == 0 ? -1.0f : 1.0f,
             static_cast<float>(volume.half_depth)};
-        tile_vertices.resize(vertices.size(), tv);
-        Draw d;
-        const auto& map = shape.surface.normal_map;
-        d.map = map && !map->empty() ? textures.normalMap(map) : 0;
-        d.mask = shape.surface.mask ? textures.mask(shape.surface.mask) : 0;
-        d.first = static_cast<GLint>(first);
-        d.count = static_cast<GLsizei>(vertices.size() - first);
-        draws.push_back(d);
+        chunk.tiles.resize(chunk.vertices.size(), tv);
+        chunk.draws.push_back({&shape.surface, 0, 0, static_cast<GLint>(first),
+                               static_cast<GLsizei>(chunk.vertices.size() - first)});
       }
     }
-    out.push_back({&contact, patch::gainsOf(ranges[0], ranges[1], settings.mu0)});
+    out[i] = {&contact, patch::gainsOf(ranges[0], ranges[1], settings.mu0)};
+  }
+}
+
+void GlPatchSampler::Impl::upload(GLuint buffer, size_t vertex_size,
+                                  const std::function<const void*(const Chunk&)>& data) const {
+  // One allocation for the pass, each chunk's vertices at its base.
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertex_count * vertex_size), nullptr,
+               GL_STREAM_DRAW);
+  for (size_t k = 0; k < chunk_count; ++k) {
+    const Chunk& chunk = chunks[k];
+    if (chunk.vertices.empty()) continue;
+    glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(chunk.base * vertex_size),
+                    static_cast<GLsizeiptr>(chunk.vertices.size() * vertex_size), data(chunk));
   }
 }
 
@@ -250,13 +313,8 @@ void GlPatchSampler::Impl::batchByMaterial() {
 void GlPatchSampler::Impl::render(const FrictionSettings& settings) {
   // Upload this pass's triangles and their tiles.
   glBindVertexArray(*vao);
-  glBindBuffer(GL_ARRAY_BUFFER, *vbo);
-  glBufferData(GL_ARRAY_BUFFER,
-               static_cast<GLsizeiptr>(vertices.size() * sizeof(patch::PatchVertex)),
-               vertices.data(), GL_STREAM_DRAW);
-  glBindBuffer(GL_ARRAY_BUFFER, *tile_vbo);
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(tile_vertices.size() * sizeof(TileVertex)),
-               tile_vertices.data(), GL_STREAM_DRAW);
+  upload(*vbo, sizeof(patch::PatchVertex), [](const Chunk& c) { return c.vertices.data(); });
+  upload(*tile_vbo, sizeof(TileVertex), [](const Chunk& c) { return c.tiles.data(); });
   batchByMaterial();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
