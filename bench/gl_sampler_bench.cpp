@@ -1,8 +1,9 @@
 // The OpenGL patch sampler per contact (SPEC 3) on this machine's OpenGL (llvmpipe without a
 // GPU): boxes resting on a textured plane, four corner contacts each, N = 4 and 16, R = 16, a
 // 1024 x 1024 RGBA8 atlas (2048 contacts per pass). Counters: time per contact, and the
-// provider's own split into patch (collect + render + read-back) and averaging. threads: the
-// pool that averages the read-back tiles (0 = every core; 1 = the calling thread).
+// provider's own split into patch (collect, render, sum on the GPU, read back) and averaging
+// (the sums finished on the CPU). threads: the pool that collects the triangles and finishes
+// the sums (0 = every core; 1 = the calling thread).
 #include <benchmark/benchmark.h>
 
 #include <memory>

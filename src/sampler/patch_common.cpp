@@ -107,36 +107,6 @@ void finishContact(Contact& c, std::span<const double> sums_a, std::span<const d
   c.fallback = false;
 }
 
-namespace {
-
-// Direction k's value at pixel `offset` of one tile (group k / 4, channel k % 4).
-float tileValue(const TileView& tile, size_t offset, int k) {
-  const size_t index = 4 * offset + static_cast<size_t>(k % 4);
-  const void* group = tile.groups[static_cast<size_t>(k / 4)];
-  if (tile.float_data) return static_cast<const float*>(group)[index];
-  return tile.byte_scale * static_cast<float>(static_cast<const uint8_t*>(group)[index]);
-}
-
-}  // namespace
-
-int averageTiles(const TileView& a, const TileView& b, int resolution, int directions,
-                 double* sums_a, double* sums_b) {
-  // P: pixels covered by both surfaces (Sec. 4.3), then the per-direction sums over P.
-  int count = 0;
-  for (int j = 0; j < resolution; ++j) {
-    for (int i = 0; i < resolution; ++i) {
-      const size_t offset = static_cast<size_t>(j) * a.row_stride + static_cast<size_t>(i);
-      if (a.coverage[offset] == 0 || b.coverage[offset] == 0) continue;
-      ++count;
-      for (int k = 0; k < directions; ++k) {
-        sums_a[k] += tileValue(a, offset, k);
-        sums_b[k] += tileValue(b, offset, k);
-      }
-    }
-  }
-  return count;
-}
-
 Transform shapePose(const Body& body, int index) {
   return body.pose * body.shapes[static_cast<size_t>(index)].local;
 }

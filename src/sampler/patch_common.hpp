@@ -37,20 +37,6 @@ PatchGains gainsOf(const ShapeRange& a, const ShapeRange& b, double mu0);
 void finishContact(Contact& contact, std::span<const double> sums_a, std::span<const double> sums_b,
                    int count, const PatchGains& gains);
 
-// One R x R tile of a read-back atlas (the OpenGL sampler's targets): coverage bytes and, per
-// group of four directions, RGBA values (bytes scaled by mu_max / 255, or floats).
-struct TileView {
-  const uint8_t* coverage = nullptr;     // first pixel of the tile
-  std::array<const void*, 16> groups{};  // first pixel of the tile in each group's target
-  size_t row_stride = 0;                 // pixels between rows of the atlas
-  bool float_data = false;
-  float byte_scale = 1.0f;  // mu per unit byte (mu_max / 255)
-};
-
-// Eq. 8 sums over the tiles' common coverage P: sums_a[k], sums_b[k] (k < directions) and |P|.
-int averageTiles(const TileView& a, const TileView& b, int resolution, int directions,
-                 double* sums_a, double* sums_b);
-
 // The world pose of shape `index` of `body`.
 Transform shapePose(const Body& body, int index);
 

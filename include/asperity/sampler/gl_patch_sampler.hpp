@@ -1,13 +1,14 @@
 // The OpenGL patch sampler (SPEC 3, Sec. 4 of the paper): both surfaces of every contact are
 // rendered into R x R tiles of an atlas frame buffer (one orthographic view per contact, the
 // tile as viewport), the fragment shader evaluates Eq. 5 for the N directions into N / 4 RGBA
-// targets at once (plus a coverage target), the atlas is read back through pixel buffer objects
-// and a fence while the next pass renders, and the tiles are averaged on the CPU with the same
-// aggregation as the CPU sampler (Eqs. 8 and 7). More contacts than the atlas holds take
-// further passes; more directions than the frame buffer's draw buffers take further sub-passes.
+// targets at once (plus a coverage target), a compute shader sums each contact's two tiles over
+// the pixels both cover (Eq. 8), and the sums come back through a storage buffer and a fence
+// while the next pass renders; the CPU divides and combines them as the CPU sampler does (Eq.
+// 7). More contacts than the atlas holds take further passes; more directions than the frame
+// buffer's draw buffers take further sub-passes.
 //
 // Geometry is the CPU sampler's (box faces and planes exact, meshes via their BVH) except that
-// spheres, capsules and cylinders are tessellated (256 x 128) instead of ray-cast.
+// spheres, capsules and cylinders are tessellated (1024 x 128) instead of ray-cast.
 // Normal maps are uploaded once per NormalMap (RGB32F, bilinear, repeat) and cached.
 // Packing: RGBA8 with scale mu_max as the paper (coefficients above mu_max saturate, steps of
 // mu_max / 255), or RGBA32F targets (float_targets).
@@ -42,13 +43,13 @@ class GlPatchSampler : public FrictionProvider {
   // contacts or surfaces, or a GL failure.
   void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                            const FrictionSettings& settings) override;
-  // Start renders every pass and queues the last read-backs; finish waits for them and
-  // averages. A call started again before it finished drops the unfinished one.
+  // Start renders and sums every pass and queues the last read-backs; finish waits for them and
+  // divides. A call started again before it finished drops the unfinished one.
   void startCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                          const FrictionSettings& settings) override;
   void finishCoefficients() override;
   bool runsAsynchronously() const override { return true; }
-  // The read-back tiles are averaged on `pool`'s threads, each contact by one thread (the same
+  // The triangles are collected and the read-back sums finished on `pool`'s threads (the same
   // bits on any count); GL calls stay on the calling thread.
   void setThreadPool(const ThreadPool* pool) override;
   double lastPatchTimeMs() const override;

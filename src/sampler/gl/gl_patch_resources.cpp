@@ -75,85 +75,62 @@ void Atlas::beginSubPass(int s) {
   glClearBufferfv(GL_DEPTH, 0, &far);
 }
 
-GLuint Atlas::framebufferOf(int g) const {
-  return framebuffers_[static_cast<size_t>(g < 0 ? 0 : g / groups_per_pass_)];
-}
-
-GLenum Atlas::attachmentOf(int g) const {
-  return g < 0 ? GL_COLOR_ATTACHMENT0
-               : static_cast<GLenum>(GL_COLOR_ATTACHMENT1 + g % groups_per_pass_);
-}
-
-void Readback::start(const Atlas& atlas, int rows) {
-  // Buffers sized for the whole atlas once, reused by every pass.
-  const auto pixels = static_cast<size_t>(atlas.size()) * static_cast<size_t>(atlas.size());
-  const size_t texel = atlas.floatTargets() ? 16 : 4;
-  if (!coverage_ || capacity_ != pixels * texel ||
-      groups_.size() != static_cast<size_t>(atlas.groups())) {
-    coverage_ = std::make_unique<gl::Buffer>();
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, *coverage_);
-    glBufferData(GL_PIXEL_PACK_BUFFER, static_cast<GLsizeiptr>(pixels), nullptr, GL_STREAM_READ);
-    groups_.clear();
-    groups_.resize(static_cast<size_t>(atlas.groups()));
-    for (gl::Buffer& b : groups_) {
-      glBindBuffer(GL_PIXEL_PACK_BUFFER, b);
-      glBufferData(GL_PIXEL_PACK_BUFFER, static_cast<GLsizeiptr>(pixels * texel), nullptr,
-                   GL_STREAM_READ);
-    }
-    capacity_ = pixels * texel;
+void Readback::start(const Atlas& atlas, Programs& programs, const SumLayout& layout) {
+  bytes_ = static_cast<size_t>(layout.contacts) * kSumLanes * layout.stride() * sizeof(float);
+  if (!buffer_ || capacity_ < bytes_) {
+    buffer_ = std::make_unique<gl::Buffer>();
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, *buffer_);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes_), nullptr,
+                 GL_STREAM_READ);
+    capacity_ = bytes_;
   }
-  // Asynchronous reads (into the bound pixel pack buffer), then the fence.
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  const int size = atlas.size();
-  coverage_bytes_ = static_cast<size_t>(size) * static_cast<size_t>(rows);
-  group_bytes_ = coverage_bytes_ * texel;
-  for (int g = -1; g < atlas.groups(); ++g) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, atlas.framebufferOf(g));
-    glReadBuffer(atlas.attachmentOf(g));
-    glBindBuffer(GL_PIXEL_PACK_BUFFER,
-                 g < 0 ? GLuint(*coverage_) : GLuint(groups_[static_cast<size_t>(g)]));
-    if (g < 0) {
-      glReadPixels(0, 0, size, rows, GL_RED, GL_UNSIGNED_BYTE, nullptr);
-    } else {
-      glReadPixels(0, 0, size, rows, GL_RGBA, atlas.floatTargets() ? GL_FLOAT : GL_UNSIGNED_BYTE,
-                   nullptr);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, *buffer_);
+  // Unit 0 the coverage, units 1.. this dispatch's coefficient targets.
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D, atlas.coverageTexture());
+  for (int first = 0; first < atlas.groups(); first += kMaxGroupsPerSum) {
+    const int groups = std::min(kMaxGroupsPerSum, atlas.groups() - first);
+    const gl::Program& program = programs.sum(groups);
+    program.use();
+    for (int g = 0; g < groups; ++g) {
+      glActiveTexture(static_cast<GLenum>(GL_TEXTURE1 + g));
+      glBindTexture(GL_TEXTURE_2D, atlas.muTexture(first + g));
     }
+    program.set("u_resolution", layout.resolution);
+    program.set("u_per_row", atlas.size() / layout.resolution);
+    program.set("u_directions", layout.directions);
+    program.set("u_first_group", first);
+    program.set("u_scale", layout.scale);
+    glDispatchCompute(static_cast<GLuint>(layout.contacts), 1, 1);
   }
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  glActiveTexture(GL_TEXTURE0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  // The shader's writes are to be seen through a mapping.
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   fence_ = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
-  gl::checkGlError("gl sampler read-back");
+  gl::checkGlError("gl sampler sums");
 }
 
 void Readback::map() {
-  // Wait for this pass's reads (flushing once), then map every buffer for reading.
+  // Wait for this pass's sums (flushing once), then map them for reading.
   const GLenum status = glClientWaitSync(fence_, GL_SYNC_FLUSH_COMMANDS_BIT, 60'000'000'000ull);
   glDeleteSync(fence_);
   fence_ = nullptr;
   if (status == GL_TIMEOUT_EXPIRED || status == GL_WAIT_FAILED) {
     throw Error("gl sampler: read-back fence did not signal");
   }
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, *coverage_);
-  coverage_ptr_ = static_cast<const uint8_t*>(glMapBufferRange(
-      GL_PIXEL_PACK_BUFFER, 0, static_cast<GLsizeiptr>(coverage_bytes_), GL_MAP_READ_BIT));
-  group_ptrs_.assign(groups_.size(), nullptr);
-  for (size_t g = 0; g < groups_.size(); ++g) {
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, groups_[g]);
-    group_ptrs_[g] = glMapBufferRange(GL_PIXEL_PACK_BUFFER, 0,
-                                      static_cast<GLsizeiptr>(group_bytes_), GL_MAP_READ_BIT);
-  }
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-  if (coverage_ptr_ == nullptr) throw Error("gl sampler: could not map the read-back buffers");
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, *buffer_);
+  sums_ = static_cast<const float*>(glMapBufferRange(
+      GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(bytes_), GL_MAP_READ_BIT));
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  if (sums_ == nullptr) throw Error("gl sampler: could not map the sums");
 }
 
 void Readback::unmap() {
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, *coverage_);
-  glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
-  for (gl::Buffer& b : groups_) {
-    glBindBuffer(GL_PIXEL_PACK_BUFFER, b);
-    glUnmapBuffer(GL_PIXEL_PACK_BUFFER);
-  }
-  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
-  coverage_ptr_ = nullptr;
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, *buffer_);
+  glUnmapBuffer(GL_SHADER_STORAGE_BUFFER);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  sums_ = nullptr;
 }
 
 Readback::~Readback() {
@@ -199,6 +176,21 @@ const gl::Program& Programs::get(int groups) {
   gl::Program program("gl sampler patch (" + std::to_string(groups) + " groups)",
                       {{GL_VERTEX_SHADER, vertex}, {GL_FRAGMENT_SHADER, fragment}});
   return programs_.emplace(groups, std::move(program)).first->second;
+}
+
+const gl::Program& Programs::sum(int groups) {
+  auto it = sums_.find(groups);
+  if (it != sums_.end()) return it->second;
+  const std::string source = "#version 430 core\n#define GROUPS " + std::to_string(groups) +
+                             "\n" + std::string(gl_shaders::patch_average_comp);
+  gl::Program program("gl sampler sums (" + std::to_string(groups) + " groups)",
+                      {{GL_COMPUTE_SHADER, source}});
+  // Its texture units, fixed: the coverage on 0, the groups' targets on 1.. (Readback::start).
+  program.use();
+  program.set("u_coverage", 0);
+  for (int g = 0; g < groups; ++g)
+    program.set(("u_mu[" + std::to_string(g) + "]").c_str(), 1 + g);
+  return sums_.emplace(groups, std::move(program)).first->second;
 }
 
 }  // namespace asperity::glpatch

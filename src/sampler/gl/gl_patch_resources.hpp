@@ -1,6 +1,7 @@
 // GPU resources of the OpenGL patch sampler: the atlas (coverage and coefficient targets, depth,
-// one frame buffer per sub-pass of at most 7 direction groups), the read-back pixel buffers with
-// their fence, the programs per group count, and normal-map / mask textures cached per object.
+// one frame buffer per sub-pass of at most 7 direction groups), the read-back of each pass's
+// sums (made on the GPU) with its fence, the programs per group count, and normal-map / mask
+// textures cached per object.
 #pragma once
 
 #include <epoxy/gl.h>
@@ -16,6 +17,11 @@
 namespace asperity::glpatch {
 
 inline constexpr int kMaxGroupsPerPass = 7;  // colour attachment 0 is the coverage target
+// Direction groups summed per dispatch: their targets and the coverage fit the 16 texture
+// units that every OpenGL 4.3 compute stage has.
+inline constexpr int kMaxGroupsPerSum = 8;
+
+class Programs;
 
 class Atlas {
  public:
@@ -29,9 +35,8 @@ class Atlas {
   bool floatTargets() const { return float_targets_; }
   // Binds sub-pass s's frame buffer with its draw buffers and clears it.
   void beginSubPass(int s);
-  // The frame buffer and attachment holding group g (or the coverage when g < 0).
-  GLuint framebufferOf(int g) const;
-  GLenum attachmentOf(int g) const;
+  GLuint coverageTexture() const { return *coverage_; }
+  GLuint muTexture(int g) const { return mu_[static_cast<size_t>(g)]; }
 
  private:
   int size_ = 0;
@@ -44,26 +49,37 @@ class Atlas {
   std::vector<gl::Framebuffer> framebuffers_;
 };
 
-// Pixel buffers for one pass's read-back, and the fence that says they are filled.
+// What one pass sums on the GPU (patch_average.comp.glsl).
+struct SumLayout {
+  int contacts = 0;     // tiles 2c and 2c + 1 of the atlas, c < contacts
+  int resolution = 0;   // R
+  int directions = 0;   // N
+  float scale = 1.0f;   // mu per unit of the targets (mu_max for RGBA8)
+  // Floats per lane: |P| of its rows, N sums of surface A, N of surface B; kSumLanes lanes a
+  // contact.
+  size_t stride() const { return 1 + 2 * static_cast<size_t>(directions); }
+};
+inline constexpr int kSumLanes = 16;  // patch_average.comp.glsl's local size
+
+// One pass's sums, made on the GPU into a storage buffer, and the fence that says they are
+// written: per contact kSumLanes x (N + N + 1) floats come back instead of two tiles of pixels.
 class Readback {
  public:
-  // Issues asynchronous reads of `rows` rows of every target into the buffers, then the fence.
-  void start(const Atlas& atlas, int rows);
-  // Waits for the fence and maps the buffers (coverage, then groups); unmap() releases them.
+  // Dispatches the sums over the atlas as rendered, then the fence.
+  void start(const Atlas& atlas, Programs& programs, const SumLayout& layout);
+  // Waits for the fence and maps the sums (kSumLanes x SumLayout::stride() floats a contact);
+  // unmap() releases them.
   void map();
   void unmap();
   bool pending() const { return fence_ != nullptr; }
-  const uint8_t* coverage() const { return coverage_ptr_; }
-  const void* group(int g) const { return group_ptrs_[static_cast<size_t>(g)]; }
+  const float* sums() const { return sums_; }
   ~Readback();
 
  private:
-  std::unique_ptr<gl::Buffer> coverage_;
-  std::vector<gl::Buffer> groups_;
-  size_t coverage_bytes_ = 0, group_bytes_ = 0, capacity_ = 0;
+  std::unique_ptr<gl::Buffer> buffer_;
+  size_t capacity_ = 0, bytes_ = 0;
   GLsync fence_ = nullptr;
-  const uint8_t* coverage_ptr_ = nullptr;
-  std::vector<const void*> group_ptrs_;
+  const float* sums_ = nullptr;
 };
 
 // Textures uploaded once per NormalMap / GainMask (keyed by address, kept alive while cached).
@@ -80,13 +96,15 @@ class TextureCache {
   std::map<const void*, Entry> entries_;
 };
 
-// The patch programs, one per direction-group count (1..7), compiled on first use.
+// The patch programs, one per direction-group count (1..7), and the summing programs, one per
+// group count of a dispatch (1..8), compiled on first use.
 class Programs {
  public:
   const gl::Program& get(int groups);
+  const gl::Program& sum(int groups);
 
  private:
-  std::map<int, gl::Program> programs_;
+  std::map<int, gl::Program> programs_, sums_;
 };
 
 }  // namespace asperity::glpatch

@@ -1,6 +1,7 @@
 // The OpenGL patch sampler (gl_patch_sampler.hpp): per pass, collect both surfaces' triangles of
 // every contact into one vertex buffer, render each surface into its tile (Eq. 5 in the fragment
-// shader), read the atlas back asynchronously and average the tiles (Eqs. 8 and 7). Each vertex
+// shader), sum each contact's tiles on the GPU (Eq. 8, a compute shader), read the sums back
+// asynchronously and finish each contact on the CPU (Eq. 7). Each vertex
 // carries its tile, so one draw per material renders every contact: under llvmpipe the state
 // changes of a draw per surface cost twice the drawing itself.
 #include "asperity/sampler/gl_patch_sampler.hpp"
@@ -122,7 +123,7 @@ struct SavedState {
 
 struct GlPatchSampler::Impl {
   GlSamplerOptions options;
-  const ThreadPool* pool = nullptr;  // averages the read-back tiles (setThreadPool)
+  const ThreadPool* pool = nullptr;  // collects triangles, finishes sums (setThreadPool)
   std::unique_ptr<gl::GlContext> context;  // declared first: destroyed last
   glpatch::Atlas atlas;
   std::array<glpatch::Readback, 2> readbacks;
@@ -365,35 +366,26 @@ void GlPatchSampler::Impl::average(int slot, const FrictionSettings& settings) {
   glpatch::Readback& rb = readbacks[static_cast<size_t>(slot)];
   rb.map();
   const Clock::time_point t0 = Clock::now();
-  const int r = settings.patch_resolution;
-  const int per_row = atlas.size() / r;
-  const size_t texel = atlas.floatTargets() ? 16 : 4;
   const auto n = static_cast<size_t>(settings.directions);
-  // Each contact: its two tiles, Eq. 8 sums over their common coverage, then Eq. 7.
-  auto tileView = [&](int tile) {
-    patch::TileView v;
-    const size_t offset =
-        static_cast<size_t>((tile / per_row) * r) * static_cast<size_t>(atlas.size()) +
-        static_cast<size_t>((tile % per_row) * r);
-    v.coverage = rb.coverage() + offset;
-    for (int g = 0; g < atlas.groups(); ++g) {
-      v.groups[static_cast<size_t>(g)] = static_cast<const uint8_t*>(rb.group(g)) + offset * texel;
-    }
-    v.row_stride = static_cast<size_t>(atlas.size());
-    v.float_data = atlas.floatTargets();
-    v.byte_scale = settings.mu_max / 255.0f;
-    return v;
-  };
-  // The mapped read-back is plain memory: the pool's threads read it, each contact writing
-  // only its own coefficients; unmap waits for them, on this thread.
+  const size_t stride = glpatch::SumLayout{.directions = settings.directions}.stride();
+  // Each contact: the GPU's Eq. 8 sums over its tiles' common coverage, then Eq. 7. The mapped
+  // sums are plain memory: the pool's threads read them, each contact writing only its own
+  // coefficients; unmap waits for them, on this thread.
   const std::vector<PassContact>& contacts = pass_contacts[static_cast<size_t>(slot)];
-  forEachOn(pool, contacts.size(), 16, [&](size_t c) {
+  forEachOn(pool, contacts.size(), 64, [&](size_t c) {
     std::array<double, kMaxDirections> sums_a{}, sums_b{};
-    const int count = patch::averageTiles(tileView(static_cast<int>(2 * c)),
-                                          tileView(static_cast<int>(2 * c + 1)), r,
-                                          settings.directions, sums_a.data(), sums_b.data());
+    double count = 0.0;
+    for (size_t lane = 0; lane < glpatch::kSumLanes; ++lane) {
+      const float* sums = rb.sums() + (c * glpatch::kSumLanes + lane) * stride;
+      count += sums[0];
+      for (size_t k = 0; k < n; ++k) {
+        sums_a[k] += sums[1 + k];
+        sums_b[k] += sums[1 + n + k];
+      }
+    }
     patch::finishContact(*contacts[c].contact, std::span<const double>(sums_a.data(), n),
-                         std::span<const double>(sums_b.data(), n), count, contacts[c].gains);
+                         std::span<const double>(sums_b.data(), n), static_cast<int>(count),
+                         contacts[c].gains);
   });
   rb.unmap();
   averaging_ms += msSince(t0);
@@ -496,8 +488,9 @@ void GlPatchSampler::startCoefficients(std::span<const Body> bodies, std::span<C
     im.collect(bodies, sampled.subspan(first, count), settings,
                im.pass_contacts[static_cast<size_t>(slot)]);
     im.render(settings);
-    const int tiles = static_cast<int>(2 * count);
-    im.readbacks[static_cast<size_t>(slot)].start(im.atlas, ((tiles + per_row - 1) / per_row) * r);
+    const glpatch::SumLayout layout{static_cast<int>(count), r, settings.directions,
+                                    im.atlas.floatTargets() ? 1.0f : settings.mu_max};
+    im.readbacks[static_cast<size_t>(slot)].start(im.atlas, im.programs, layout);
     ++im.passes;
   }
   // The device starts on what is queued while the caller works.

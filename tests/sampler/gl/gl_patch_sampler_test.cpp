@@ -245,7 +245,7 @@ TEST(GlPatchSampler, WorldSetsUpTheSolverWhileItRendersWithTheSameBits) {
 TEST(GlPatchSampler, WorldStateIsTheSameOnOneAndFourThreads) {
   // With the gl sampler too, the state hash does not depend on the thread count (SPEC 9): the
   // pool collects the triangles (boxes; meshes, hulls and curved shapes through the shared
-  // mesh cache) and averages the tiles, the calling thread keeps every GL call.
+  // mesh cache) and finishes the sums, the calling thread keeps every GL call.
   for (const char* name : {"stacking.json", "examples/shapes.json", "examples/meshes.json"}) {
     SceneDesc scene = loadScene(test::sourcePath(std::string("scenes/") + name));
     scene.sampler = "gl";
