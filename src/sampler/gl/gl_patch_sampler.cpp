@@ -1,15 +1,15 @@
 // The OpenGL patch sampler (gl_patch_sampler.hpp): per pass, collect both surfaces' triangles of
 // every contact into one vertex buffer, render each surface into its tile (Eq. 5 in the fragment
 // shader), sum each contact's tiles on the GPU (Eq. 8, a compute shader), read the sums back
-// asynchronously and finish each contact on the CPU (Eq. 7). Each vertex
-// carries its tile, so one draw per material renders every contact: under llvmpipe the state
-// changes of a draw per surface cost twice the drawing itself.
+// asynchronously and finish each contact on the CPU (Eq. 7). Each vertex carries its tile, so
+// one draw per material renders every contact: under llvmpipe the state changes of a draw per
+// surface cost twice the drawing itself.
 #include "asperity/sampler/gl_patch_sampler.hpp"
 
 #include <algorithm>
 #include <chrono>
-#include <functional>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
