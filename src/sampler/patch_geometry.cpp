@@ -214,11 +214,15 @@ void rasteriseMesh(const Volume& volume, const Shape& shape, const Placement& pl
   }
 }
 
+// Spheres, capsules and cylinders: the CPU sampler ray-casts them, the GL sampler meshes them.
+bool isCurved(ShapeType type) {
+  return type == ShapeType::Sphere || type == ShapeType::Capsule || type == ShapeType::Cylinder;
+}
+
 }  // namespace
 
 const CachedMesh& MeshCache::get(const Shape& shape) {
-  const bool curved = shape.type == ShapeType::Sphere || shape.type == ShapeType::Capsule ||
-                      shape.type == ShapeType::Cylinder;
+  const bool curved = isCurved(shape.type);
   if (!curved && !shape.mesh) throw Error("patch sampler: mesh shape without mesh data");
   const Key key{curved ? nullptr : shape.mesh.get(), static_cast<int>(shape.type),
                 curved ? shape.radius : 0.0,         curved ? shape.half_height : 0.0,
@@ -245,9 +249,7 @@ void prepareMeshes(MeshCache& meshes, std::span<const Body> bodies, const Contac
       const Shape& shape = range.body->shapes[static_cast<size_t>(k)];
       const bool meshed = shape.type == ShapeType::TriangleMesh ||
                           shape.type == ShapeType::ConvexHull;
-      const bool curved = shape.type == ShapeType::Sphere || shape.type == ShapeType::Capsule ||
-                          shape.type == ShapeType::Cylinder;
-      if (meshed || (meshed_curves && curved)) meshes.get(shape);
+      if (meshed || (meshed_curves && isCurved(shape.type))) meshes.get(shape);
     }
   }
 }

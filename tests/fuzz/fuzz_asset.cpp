@@ -1,7 +1,8 @@
 // libFuzzer target: asset bytes through the importer from memory (assimp: every format it reads
 // for us, glTF text and glb, FBX, COLLADA, 3DS; OBJ goes through tinyobjloader from files,
-// fuzz_obj's), embedded textures decoded. The first byte picks the format; every rejection must be an asperity::Error naming the asset, anything
-// else (a crash, a report, another exception) is a finding.
+// fuzz_obj's), embedded textures decoded. The first byte picks the format; every rejection must
+// be an asperity::Error naming the asset, anything else (a crash, a report, another exception)
+// is a finding.
 #include <cstddef>
 #include <cstdint>
 #include <string>
