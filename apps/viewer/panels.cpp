@@ -144,16 +144,23 @@ void Viewer::profilePanel() {
   const StepProfile& p = world_->profile();
   ImGui::Text("%.1f fps   render %.1f ms   step %.2f ms", fps_, render_ms_, step_ms_);
   ImGui::Text("contacts %d   fallbacks %d", p.contacts, p.fallbacks);
-  // Per-stage times of the last step (ms), in step order, the provider's share under friction.
+  // Per-stage times of the last step (ms), in step order, the provider's share under friction
+  // and the solve's parts under solve.
   for (int i = 0; i < kStageCount; ++i) {
     const auto stage = static_cast<Stage>(i);
-    ImGui::Text("%-12s %8.3f ms", stageName(stage), p.ms(stage));
+    ImGui::Text("%-16s %8.3f ms", stageName(stage), p.ms(stage));
     if (stage == Stage::Friction) {
-      ImGui::Text("%-12s %8.3f ms", "  patch", p.patch_ms);
-      ImGui::Text("%-12s %8.3f ms", "  averaging", p.averaging_ms);
+      ImGui::Text("%-16s %8.3f ms", "  patch", p.patch_ms);
+      ImGui::Text("%-16s %8.3f ms", "  averaging", p.averaging_ms);
+    }
+    if (stage == Stage::Solve) {
+      for (int k = 0; k < kSolveStageCount; ++k) {
+        const auto part = static_cast<SolveStage>(k);
+        ImGui::Text("  %-14s %8.3f ms", solveStageName(part), p.solve_ms[static_cast<size_t>(k)]);
+      }
     }
   }
-  ImGui::Text("%-12s %8.3f ms", "total", p.total_ms);
+  ImGui::Text("%-16s %8.3f ms", "total", p.total_ms);
 }
 
 }  // namespace asperity::viewer

@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "parallel/thread_pool.hpp"
-#include "solver/contact_solver.hpp"
 
 namespace asperity {
 
@@ -19,18 +18,18 @@ Quat rotate(const Quat& q, const Vec3& w, double dt) {
 
 }  // namespace
 
-void integratePoses(std::span<Body> bodies, const ContactSolver& solver, double dt,
-                    const ThreadPool& pool) {
+void integratePoses(std::span<Body> bodies, std::span<const Vec3> pseudo_linear,
+                    std::span<const Vec3> pseudo_angular, double dt, const ThreadPool* pool) {
   // Each body moves alone: any split over threads gives the same poses.
-  pool.forEach(bodies.size(), 256, [&](size_t i) {
+  forEachOn(pool, bodies.size(), 256, [&](size_t i) {
     Body& b = bodies[i];
     if (b.type == BodyType::Static) return;
     // Dynamic bodies also move by the split-impulse pseudo-velocities (then forgotten).
     Vec3 v = b.linear_velocity;
     Vec3 w = b.angular_velocity;
     if (b.isDynamic()) {
-      v += solver.pseudoLinear(static_cast<BodyId>(i));
-      w += solver.pseudoAngular(static_cast<BodyId>(i));
+      v += pseudo_linear[i];
+      w += pseudo_angular[i];
     }
     b.pose.position += dt * v;
     b.pose.rotation = rotate(b.pose.rotation, w, dt);

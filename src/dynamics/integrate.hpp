@@ -8,13 +8,13 @@
 
 namespace asperity {
 
-class ContactSolver;
 class ThreadPool;
 
 // Moves every kinematic and dynamic body over dt by its velocities; dynamic bodies also by the
-// solver's split-impulse pseudo-velocities (then forgotten). Bodies move independently, so
-// any split over the pool's threads gives the same bits.
-void integratePoses(std::span<Body> bodies, const ContactSolver& solver, double dt,
-                    const ThreadPool& pool);
+// solve's split-impulse pseudo-velocities (indexed by BodyId; then forgotten). Bodies move
+// independently, so any split over the pool's threads (null: the calling thread) gives the
+// same bits.
+void integratePoses(std::span<Body> bodies, std::span<const Vec3> pseudo_linear,
+                    std::span<const Vec3> pseudo_angular, double dt, const ThreadPool* pool);
 
 }  // namespace asperity

@@ -1,15 +1,16 @@
 // Frame mode Auto (SPEC 5): t along the sliding velocity that a few frictionless PGS iterations
 // predict, so the friction coefficients are sampled where the contact is about to slide.
 #include "frames/frame_modes.hpp"
-#include "solver/contact_solver.hpp"
 
 namespace asperity {
 
 void alignFramesWithSliding(const FrameInputs& in, std::span<Contact> contacts) {
-  const ContactSolver& solver = in.frictionless_solve(contacts);
+  // Without a prediction (an engine's contacts handed in alone) the world frames stay.
+  if (!in.predict_velocities) return;
+  const PredictedVelocities predicted = in.predict_velocities(contacts);
   auto pointVelocity = [&](BodyId id, const Vec3& p) {
-    return Vec3(solver.linearVelocity(id) +
-                solver.angularVelocity(id).cross(p - in.bodies[id].pose.position));
+    return Vec3(predicted.linear[id] +
+                predicted.angular[id].cross(p - in.bodies[id].pose.position));
   };
   for (Contact& c : contacts) {
     const Vec3 v = pointVelocity(c.body_a, c.point) - pointVelocity(c.body_b, c.point);

@@ -1,5 +1,5 @@
-// The contact-frame stage (frames/contact_frames.hpp) and the one table of frame modes.
-#include "frames/contact_frames.hpp"
+// The contact-frame stage (asperity/frames/contact_frames.hpp) and the one table of modes.
+#include "asperity/frames/contact_frames.hpp"
 
 #include <array>
 #include <cmath>
@@ -22,13 +22,13 @@ constexpr std::array<FrameModeRule, std::size(kFrameModeNames)> kFrameModeRules 
 }  // namespace
 
 void computeContactFrames(FrameMode mode, const FrameInputs& in, std::span<Contact> contacts,
-                          const ThreadPool& pool) {
+                          const ThreadPool* pool) {
   const FrameModeRule& rule = kFrameModeRules.at(static_cast<size_t>(mode));
   // Each contact's frame alone, so threads may share the contacts; a user's frame callback
   // is only ever called from this thread.
   const bool user_code = rule.calls_user_code && in.callback;
   const size_t grain = user_code ? contacts.size() : 64;
-  pool.forEach(contacts.size(), grain, [&](size_t i) {
+  forEachOn(pool, contacts.size(), grain, [&](size_t i) {
     Contact& c = contacts[i];
     setContactFrame(c, rule.desired(in, c), in.fallback_axis);
   });

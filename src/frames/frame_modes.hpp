@@ -6,7 +6,7 @@
 
 #include <span>
 
-#include "frames/contact_frames.hpp"
+#include "asperity/frames/contact_frames.hpp"
 
 namespace asperity {
 

@@ -68,36 +68,54 @@ class ContactSolver {
   void begin(std::span<const Body> bodies, const SolverSettings& settings);
   // Joint rows (anchors in world from the bodies' poses).
   void setJoints(std::span<const SolverJoint> joints);
-  // Contact rows. With friction, contacts carry their frame (t, b) and mu; without, only the
-  // normal rows are solved (frame mode Auto's first pass). The sweep order is chosen on the
-  // calling thread; then rows, limit surfaces and warm starting, each written straight into
-  // its slot in that order, run in one pass over the contacts on the pool.
-  void setContacts(std::span<const Contact> contacts, bool friction);
-  // setContacts(contacts, true) in two calls, so that the rows can be set up while the
-  // coefficients are still being computed (on a GPU): setContactRows reads only the contacts'
-  // geometry and frames; setContactLimits, with the same contacts now carrying mu, adds the
-  // limit surfaces and warm starts. The same bits as setContacts.
-  void setContactRows(std::span<const Contact> contacts);
+  // Joint rows from the joints' descriptions (bodies as given to begin): anchors and axes
+  // moved from the descriptions' body frames to the centre-of-mass frames, a distance joint's
+  // length at time t and its rate over dt; rest_rotations[i] is joint i's q_a^-1 q_b at
+  // creation (fixed joints).
+  void setJoints(std::span<const JointDesc> joints, std::span<const Quat> rest_rotations, double t,
+                 double dt);
+  // Contact rows, in the parts of the solve stage (solver/solve_stage.hpp). setContactRows
+  // reads only the contacts' geometry and frames, so the rows can be built while the
+  // coefficients are still being computed (on a GPU); without friction only the normal rows
+  // are solved (frame mode Auto's prediction). setContactLimits, with the same contacts now
+  // carrying mu, adds the limit surfaces; warmStart builds the islands and applies the last
+  // step's impulses (contacts and joints). The sweep order is chosen on the calling thread;
+  // rows, limit surfaces and warm starts are written straight into their slots in that order,
+  // on the pool.
+  void setContactRows(std::span<const Contact> contacts, bool friction);
   void setContactLimits(std::span<const Contact> contacts);
-  // Warm start (first call after setContacts only) and `iterations` PGS sweeps. The rows fall
-  // into islands that share no moving body; each island is swept on its own (on the pool's
-  // threads), its rows in the global sweep order, which gives exactly the bits of one sweep
-  // over all rows: rows of other islands never read its bodies.
+  void warmStart(std::span<const Contact> contacts);
+  // The three above in one call.
+  void setContacts(std::span<const Contact> contacts, bool friction);
+  // `iterations` PGS sweeps. The rows fall into islands that share no moving body; each
+  // island is swept on its own (on the pool's threads), its rows in the global sweep order,
+  // which gives exactly the bits of one sweep over all rows: rows of other islands never read
+  // its bodies.
   void iterate(int iterations);
   // Writes velocities and impulses back and remembers them for the next step's warm start.
   void finish(std::span<Body> bodies, std::span<Contact> contacts);
 
   // Forgets the impulses kept for warm starting (contacts and joints), as in a new solver.
   void forgetWarmStart();
-  // Current solver velocities of a body (world frame).
+  // The pool of setThreadPool (null: the calling thread only).
+  const ThreadPool* threadPool() const { return pool_; }
+  // Current solver velocities of a body (world frame), and of all bodies by BodyId.
   const Vec3& linearVelocity(BodyId id) const { return v_[id]; }
   const Vec3& angularVelocity(BodyId id) const { return w_[id]; }
   // Position-correction pseudo-velocities of the last solve (applied by integration only).
   const Vec3& pseudoLinear(BodyId id) const { return vp_[id]; }
   const Vec3& pseudoAngular(BodyId id) const { return wp_[id]; }
+  std::span<const Vec3> linearVelocities() const { return v_; }
+  std::span<const Vec3> angularVelocities() const { return w_; }
+  std::span<const Vec3> pseudoLinearVelocities() const { return vp_; }
+  std::span<const Vec3> pseudoAngularVelocities() const { return wp_; }
   // Norm of the impulse changes of the last sweep (N s): falls as the solve converges.
   double lastDelta() const { return last_delta_; }
   int contactRowCount() const { return static_cast<int>(rows_.size()); }
+  // Fewest rows (contacts and joint rows) that the islands are swept in parallel for, and
+  // fewest items (bodies, contacts) that per-item work goes to the threads for: below that,
+  // waking them costs more than the work.
+  static constexpr size_t kParallelRows = 256;
 
   // One contact: Jacobians, I^-1 J^T, effective masses and accumulated impulses. Every field
   // is written by prepareContact, so a new row starts uninitialised (see RowAllocator).
@@ -181,7 +199,6 @@ class ContactSolver {
   void scheduleRows(std::span<const Contact> contacts);
   const Cached* findCached(const Contact& c, size_t& cursor) const;
   void warmStartRow(const Cached& cached, ContactRow& row, size_t slot) const;
-  void warmStart();
   void warmStartJoints();
   void addAngularRow(int a, int b, int joint, int slot, const Vec3& u, double target);
   void addAxisRow(AxisRow row);
@@ -210,6 +227,10 @@ class ContactSolver {
   void sweepRow(std::span<const Limit> limits, size_t i, double& delta2);
   template <class Limit>
   void sweepRowPair(std::span<const Limit> limits, size_t ix, size_t iy, lanes::Lanes& delta2);
+  // The new velocities of the two rows' bodies (lanes: the rows), stored for moving bodies.
+  void storePair(const size_t a[2], const size_t b[2], lanes::Lanes ima, lanes::Lanes imb,
+                 const lanes::Lanes3& va, const lanes::Lanes3& wa, const lanes::Lanes3& vb,
+                 const lanes::Lanes3& wb);
   void solvePositionRow(ContactRow& r, size_t a, size_t b);
   double sweepJoints(const Island& island);
   void applyImpulse(int a, int b, const Vec3& p, const Vec3& ia, const Vec3& ib);
@@ -229,10 +250,12 @@ class ContactSolver {
   std::vector<int> slot_;     // contact i's row in rows_ (rows_ is stored in sweep order)
   LimitVectors limits_;       // one per contact row, of the settings' limit surface
   bool friction_ = true;
-  bool warm_started_ = false;
+  bool islands_ready_ = false;  // islands_ match the rows (buildIslands since the last change)
   std::vector<BallRow> balls_;
   std::vector<AxisRow> axes_;
-  std::vector<double> joint_lambda_;  // 6 slots per joint, kept for the next warm start
+  std::vector<double> joint_lambda_;   // 6 slots per joint, kept for the next warm start
+  std::vector<SolverJoint> joints_;    // scratch of setJoints from descriptions
+  std::vector<Transform> com_offset_;  // per body: Body::com_offset (begin)
   // Islands of this solve, reused across steps (only the first island_count_ are live).
   std::vector<Island> islands_;
   size_t island_count_ = 0;

@@ -14,7 +14,31 @@ constexpr size_t kSlots = 6;  // per joint: 3 ball + up to 3 scalar rows
 
 }  // namespace
 
+void ContactSolver::setJoints(std::span<const JointDesc> joints,
+                              std::span<const Quat> rest_rotations, double t, double dt) {
+  // Into the solver's own scratch: a warmed-up step allocates nothing.
+  joints_.resize(joints.size());
+  for (size_t i = 0; i < joints.size(); ++i) {
+    const JointDesc& j = joints[i];
+    const Transform& a = com_offset_[j.body_a];
+    const Transform& b = com_offset_[j.body_b];
+    SolverJoint& s = joints_[i];
+    s.type = j.type;
+    s.body_a = j.body_a;
+    s.body_b = j.body_b;
+    s.anchor_a = a.applyInverse(j.anchor_a);
+    s.anchor_b = b.applyInverse(j.anchor_b);
+    s.axis_a = a.rotation.conjugate() * j.axis_a;
+    s.axis_b = b.rotation.conjugate() * j.axis_b;
+    s.rest_rotation = rest_rotations[i];
+    s.length = distanceJointLength(j, t);
+    s.length_rate = (distanceJointLength(j, t + dt) - s.length) / dt;
+  }
+  setJoints(joints_);
+}
+
 void ContactSolver::setJoints(std::span<const SolverJoint> joints) {
+  islands_ready_ = false;
   balls_.clear();
   axes_.clear();
   joint_lambda_.resize(joints.size() * kSlots, 0.0);

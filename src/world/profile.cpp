@@ -14,6 +14,7 @@ const char* stageName(Stage stage) {
 void ProfileSums::add(const StepProfile& step) {
   ++steps;
   for (size_t i = 0; i < stage_ms.size(); ++i) stage_ms[i] += step.stage_ms[i];
+  for (size_t i = 0; i < solve_ms.size(); ++i) solve_ms[i] += step.solve_ms[i];
   patch_ms += step.patch_ms;
   averaging_ms += step.averaging_ms;
   total_ms += step.total_ms;
@@ -29,9 +30,8 @@ double ProfileSums::meanMs(Stage stage) const {
 
 std::vector<std::pair<std::string, double>> ProfileSums::means() const {
   const double n = static_cast<double>(std::max<int64_t>(steps, 1));
-  std::vector<std::pair<std::string, double>> out = {{"contacts", contacts / n},
-                                                     {"fallbacks", fallbacks / n},
-                                                     {"reused", reused / n}};
+  std::vector<std::pair<std::string, double>> out = {
+      {"contacts", contacts / n}, {"fallbacks", fallbacks / n}, {"reused", reused / n}};
   for (int i = 0; i < kStageCount; ++i) {
     const auto stage = static_cast<Stage>(i);
     out.emplace_back(std::string(stageName(stage)) + "_ms", meanMs(stage));
@@ -39,6 +39,14 @@ std::vector<std::pair<std::string, double>> ProfileSums::means() const {
     if (stage == Stage::Friction) {
       out.emplace_back("patch_ms", patch_ms / n);
       out.emplace_back("averaging_ms", averaging_ms / n);
+    }
+    // The solve stage's parts right after it.
+    if (stage == Stage::Solve) {
+      for (int k = 0; k < kSolveStageCount; ++k) {
+        const char* part = solveStageName(static_cast<SolveStage>(k));
+        out.emplace_back("solve_" + std::string(part) + "_ms",
+                         solve_ms[static_cast<size_t>(k)] / n);
+      }
     }
   }
   out.emplace_back("total_ms", total_ms / n);

@@ -1,10 +1,10 @@
 // The world: bodies, joints and drivers, and the step that runs the stages in order
 // (docs/step.md). The stages live in their folders: dynamics/drivers, collision/, frames/,
-// sampler/, solver/, dynamics/integrate; world_solve.cpp hands them the world's data.
+// sampler/, solver/ (solve_stage), dynamics/integrate; world_solve.cpp hands them the world's
+// data.
 #include "asperity/world/world.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cstring>
 #include <string>
 
@@ -13,26 +13,11 @@
 #include "asperity/world/state_check.hpp"
 #include "collision/collision_detector.hpp"
 #include "dynamics/drivers.hpp"
-#include "dynamics/integrate.hpp"
-#include "frames/contact_frames.hpp"
+#include "math/stopwatch.hpp"
 #include "parallel/thread_pool.hpp"
 #include "solver/contact_solver.hpp"
 
 namespace asperity {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-// Milliseconds since `start`, and restart the clock.
-double lap(Clock::time_point& start) {
-  const Clock::time_point now = Clock::now();
-  const double ms = std::chrono::duration<double, std::milli>(now - start).count();
-  start = now;
-  return ms;
-}
-
-}  // namespace
 
 World::World(WorldSettings settings)
     : settings_(std::move(settings)),
@@ -56,43 +41,48 @@ const ThreadPool& World::threadPool() {
 void World::step() {
   if (!(settings_.dt > 0.0)) throw Error("world settings: dt must be > 0");
   if (settings_.iterations < 1) throw Error("world settings: iterations must be >= 1");
+  if (settings_.substeps < 1) throw Error("world settings: substeps must be >= 1");
   const ThreadPool& pool = threadPool();
   provider_->setThreadPool(&pool);
   solver_->setThreadPool(&pool);
   StepProfile p;
-  const Clock::time_point begin = Clock::now();
-  Clock::time_point clock = begin;
+  Stopwatch clock;
   // 1. Gravity, springs and loads change the velocities (first half of semi-implicit Euler).
   applyDrivers(bodies_, springs_, loads_, settings_.gravity, time_, settings_.dt);
-  p.ms(Stage::Drivers) = lap(clock);
+  p.ms(Stage::Drivers) = clock.lap();
   // 2. Contacts from the current poses (normal B -> A, phi, witness points, keys).
   collide();
-  p.ms(Stage::Collide) = lap(clock);
+  p.ms(Stage::Collide) = clock.lap();
   // 3. Each contact's tangent frame (t, b) by the frame mode (SPEC 5).
-  computeContactFrames(settings_.frame_mode, frameInputs(), contacts_, *pool_);
-  p.ms(Stage::Frames) = lap(clock);
-  // 4. Per-direction friction coefficients of every contact (SPEC 3, Eq. 7).
+  computeContactFrames(settings_.frame_mode, frameInputs(), contacts_, &pool);
+  p.ms(Stage::Frames) = clock.lap();
+  // 4. Per-direction friction coefficients of every contact started (SPEC 3, Eq. 7).
   computeFriction();
-  p.ms(Stage::Friction) = lap(clock);
-  p.patch_ms = provider_->lastPatchTimeMs();
-  p.averaging_ms = provider_->lastAveragingTimeMs();
-  p.reused = provider_->lastReusedCount();
-  // 5. PGS on velocities: joints, contacts with limit-surface friction, split impulses.
-  solve();
-  p.ms(Stage::Solve) = lap(clock);
+  p.ms(Stage::Friction) = clock.lap();
+  // 5. PGS on velocities: joints, contacts with limit-surface friction, split impulses; it
+  // awaits the coefficients after building its rows.
+  solve(p);
+  p.ms(Stage::Solve) = clock.lap();
   // 6. Positions and orientations from the new velocities (plus position corrections).
-  integratePoses(bodies_, *solver_, substepDt(), *pool_);
-  p.ms(Stage::Integrate) = lap(clock);
-  // 7. The clock.
+  integrate();
+  p.ms(Stage::Integrate) = clock.lap();
+  // 7. The clock, and what the step saw.
   time_ += settings_.dt;
   ++steps_;
-  p.total_ms = std::chrono::duration<double, std::milli>(Clock::now() - begin).count();
-  p.contacts = static_cast<int>(contacts_.size());
-  p.fallbacks = static_cast<int>(std::count_if(contacts_.begin(), contacts_.end(),
-                                               [](const Contact& c) { return c.fallback; }));
+  p.total_ms = clock.total();
+  recordContacts(p);
   profile_ = p;
   // 8. No silent NaN or explosion: an unusable state stops the run here.
   checkWorldState(*this, steps_);
+}
+
+void World::recordContacts(StepProfile& p) const {
+  p.patch_ms = provider_->lastPatchTimeMs();
+  p.averaging_ms = provider_->lastAveragingTimeMs();
+  p.reused = provider_->lastReusedCount();
+  p.contacts = static_cast<int>(contacts_.size());
+  p.fallbacks = static_cast<int>(std::count_if(contacts_.begin(), contacts_.end(),
+                                               [](const Contact& c) { return c.fallback; }));
 }
 
 BodyId World::createBody(const BodyDesc& desc) {

@@ -88,7 +88,7 @@ TEST(RunCommand, StatsHoldPerStepAverages) {
   const nlohmann::json& per_step = stats["per_step"];
   for (const char* key :
        {"contacts", "fallbacks", "reused", "drivers_ms", "collide_ms", "frames_ms", "friction_ms",
-        "patch_ms", "averaging_ms", "solve_ms", "integrate_ms", "total_ms"})
+        "patch_ms", "averaging_ms", "solve_ms", "solve_iterate_ms", "integrate_ms", "total_ms"})
     EXPECT_TRUE(per_step.contains(key)) << key;
   // The collision set-up before the first step, apart from the per-step means.
   EXPECT_GT(stats["prepare_ms"].get<double>(), 0.0);

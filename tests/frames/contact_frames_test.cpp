@@ -1,5 +1,5 @@
 // The contact-frame stage (SPEC 5): world, body (axis and callback), texture and auto modes.
-#include "frames/contact_frames.hpp"
+#include "asperity/frames/contact_frames.hpp"
 
 #include <gtest/gtest.h>
 

@@ -276,10 +276,11 @@ TEST(ContactSolver, WarmStartSkipsRepeatedKeysOnAnyThreadCount) {
   }
 }
 
-TEST(ContactSolver, RowsThenLimitsGiveTheBitsOfSetContacts) {
-  // The world sets up the rows while a GPU computes the coefficients, then adds the limit
-  // surfaces: the same impulses and velocities, bit for bit, as setContacts in one call, warm
-  // started from a first solve, on one thread and two.
+TEST(ContactSolver, RowsBuiltBeforeTheCoefficientsGiveTheBitsOfRowsBuiltAfter) {
+  // The solve stage builds the rows while a GPU may still compute the coefficients, then adds
+  // the limit surfaces: rows must not read mu. Rows built from contacts whose mu is still
+  // unset give the same impulses and velocities, bit for bit, as rows built from contacts
+  // that carry it, warm started from a first solve, on one thread and two.
   for (const int threads : {1, 2}) {
     const ThreadPool pool(threads);
     Column col = column(70);  // 280 contacts
@@ -296,8 +297,13 @@ TEST(ContactSolver, RowsThenLimitsGiveTheBitsOfSetContacts) {
       for (int step = 0; step < 2; ++step) {
         solver.begin(bodies, s);
         if (split) {
-          solver.setContactRows(contacts);
-          solver.setContactLimits(contacts);
+          // The coefficients arrive only after the rows are built.
+          std::vector<Contact> pending = contacts;
+          for (Contact& c : pending) c.mu = box(9.0f, 9.0f, 9.0f, 9.0f);
+          solver.setContactRows(pending, true);
+          for (size_t i = 0; i < pending.size(); ++i) pending[i].mu = contacts[i].mu;
+          solver.setContactLimits(pending);
+          solver.warmStart(pending);
         } else {
           solver.setContacts(contacts, true);
         }
@@ -417,7 +423,7 @@ TEST(ContactSolver, LimitsForOtherContactsThanTheRowsAreAnError) {
   Column col = column(2);
   ContactSolver solver;
   solver.begin(col.bodies, settings(LimitSurfaceKind::Box));
-  solver.setContactRows(col.contacts);
+  solver.setContactRows(col.contacts, true);
   const std::span<const Contact> fewer(col.contacts.data(), 3);
   EXPECT_THROW(
       {

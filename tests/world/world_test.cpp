@@ -254,6 +254,15 @@ TEST(World, ProfileCountsContactsAndStages) {
   }
   EXPECT_GT(p.ms(Stage::Solve), 0.0);
   EXPECT_LE(stages, p.total_ms * (1 + 1e-9));
+  // The solve stage's parts were timed inside it.
+  double parts = 0.0;
+  for (int k = 0; k < kSolveStageCount; ++k) {
+    EXPECT_GE(p.solve_ms[static_cast<size_t>(k)], 0.0)
+        << solveStageName(static_cast<SolveStage>(k));
+    parts += p.solve_ms[static_cast<size_t>(k)];
+  }
+  EXPECT_GT(p.solve_ms[static_cast<size_t>(SolveStage::Iterate)], 0.0);
+  EXPECT_LE(parts, p.ms(Stage::Solve) * (1 + 1e-9));
 }
 
 // One ProfileSums for every front end: sums, means and the --stats names in step order.
@@ -274,10 +283,12 @@ TEST(World, ProfileSumsAverageStepsInStageOrder) {
   const auto means = sums.means();
   std::vector<std::string> names;
   for (const auto& [name, value] : means) names.push_back(name);
-  EXPECT_EQ(names,
-            (std::vector<std::string>{"contacts", "fallbacks", "reused", "drivers_ms", "collide_ms",
-                                      "frames_ms", "friction_ms", "patch_ms", "averaging_ms",
-                                      "solve_ms", "integrate_ms", "total_ms"}));
+  EXPECT_EQ(names, (std::vector<std::string>{
+                       "contacts", "fallbacks", "reused", "drivers_ms", "collide_ms", "frames_ms",
+                       "friction_ms", "patch_ms", "averaging_ms", "solve_ms",
+                       "solve_prepare_joints_ms", "solve_prepare_rows_ms",
+                       "solve_await_friction_ms", "solve_set_limits_ms", "solve_warm_start_ms",
+                       "solve_iterate_ms", "solve_store_impulses_ms", "integrate_ms", "total_ms"}));
   EXPECT_DOUBLE_EQ(means[0].second, 15.0);
   EXPECT_DOUBLE_EQ(means[2].second, 2.0);  // reused
   EXPECT_DOUBLE_EQ(means[4].second, 2.0);  // collide_ms

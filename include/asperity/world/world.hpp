@@ -20,9 +20,11 @@
 #include "asperity/dynamics/body.hpp"
 #include "asperity/dynamics/driver.hpp"
 #include "asperity/dynamics/joint.hpp"
+#include "asperity/frames/contact_frames.hpp"
 #include "asperity/friction/limit_surface.hpp"
 #include "asperity/math/enum_names.hpp"
 #include "asperity/sampler/friction_provider.hpp"
+#include "asperity/solver/solve_stage.hpp"
 
 namespace asperity {
 
@@ -30,22 +32,7 @@ namespace asperity {
 class CollisionDetector;
 class ContactSolver;
 class ThreadPool;
-struct FrameInputs;
-struct SolverJoint;
-struct SolverSettings;
-
-// How each contact's tangent t is chosen (SPEC 5).
-enum class FrameMode {
-  World,   // world_axis projected on the contact plane (fallback_axis when that vanishes)
-  Body,    // body-local frame_axis of A, else of B, else the frame callback, else World
-  Auto,    // along the relative sliding velocity after a few frictionless iterations
-  Texture  // along the +u direction of B's texture (planes and boxes), else World
-};
-inline constexpr std::pair<const char*, FrameMode> kFrameModeNames[] = {
-    {"world", FrameMode::World},
-    {"body", FrameMode::Body},
-    {"auto", FrameMode::Auto},
-    {"texture", FrameMode::Texture}};
+struct SolveInputs;
 
 // Most worker threads a world may ask for (WorldSettings::threads).
 inline constexpr int kMaxThreads = 1024;
@@ -87,8 +74,9 @@ const char* stageName(Stage stage);
 // Wall-clock time of each stage of the last step (ms), and what it saw.
 struct StepProfile {
   std::array<double, kStageCount> stage_ms{};  // indexed by Stage
-  double patch_ms = 0.0;      // provider's patch time, inside Friction (paper Table 1)
-  double averaging_ms = 0.0;  // provider's averaging time, inside Friction (paper Table 1)
+  SolveStageTimes solve_ms{};  // the parts of Solve, indexed by SolveStage (sub-steps summed)
+  double patch_ms = 0.0;       // provider's patch time, inside Friction (paper Table 1)
+  double averaging_ms = 0.0;   // provider's averaging time, inside Friction (paper Table 1)
   double total_ms = 0.0;
   int contacts = 0;
   int fallbacks = 0;  // contacts whose patch was empty (mu = mu0)
@@ -104,6 +92,7 @@ struct StepProfile {
 struct ProfileSums {
   int64_t steps = 0;
   std::array<double, kStageCount> stage_ms{};
+  SolveStageTimes solve_ms{};
   double patch_ms = 0.0, averaging_ms = 0.0, total_ms = 0.0;
   double contacts = 0.0, fallbacks = 0.0, reused = 0.0;
   int max_contacts = 0;
@@ -111,7 +100,8 @@ struct ProfileSums {
 
   void add(const StepProfile& step);
   // Per-step means, named as `asperity run --stats` writes them: contacts, fallbacks, then
-  // <stage>_ms in step order with patch_ms and averaging_ms after friction_ms, then total_ms.
+  // <stage>_ms in step order with patch_ms and averaging_ms after friction_ms and the solve's
+  // parts (solve_<part>_ms, SolveStage order) after solve_ms, then total_ms.
   std::vector<std::pair<std::string, double>> means() const;
   double meanMs(Stage stage) const;
 };
@@ -198,16 +188,13 @@ class World {
   void collide();
   FrameInputs frameInputs();
   void computeFriction();
-  void solve();
+  // What the solve stage and frame mode Auto's prediction read (solver/solve_stage.hpp).
+  SolveInputs solveInputs();
+  void solve(StepProfile& profile);
+  void integrate();
+  // The provider's times and the contact counts of this step into its profile.
+  void recordContacts(StepProfile& p) const;
   void checkBody(BodyId id, const std::string& what) const;
-  SolverSettings solverSettings() const;
-  std::span<const SolverJoint> solverJoints(double t, double h);
-  double substepDt() const { return settings_.dt / settings_.substeps; }
-  // The solver's start of a solve of length h at time t: velocities, masses, joint rows.
-  void beginSolve(double t, double h);
-  void solveOnce(double t, double h);
-  void solveSubsteps();
-  void moveContacts(std::span<const Contact> base, std::span<const Transform> start);
   double automaticSlop() const;
   const ThreadPool& threadPool();
 
@@ -226,10 +213,7 @@ class World {
   FrameCallback frame_callback_;
   StepProfile profile_;
   bool bodies_changed_ = true;
-  // The solver's contact rows were set up while an asynchronous provider worked (this step).
-  bool contact_rows_ready_ = false;
   double slop_ = 0.0;  // resolved linear slop (m)
-  std::vector<SolverJoint> solver_joints_;
   double time_ = 0.0;
   int64_t steps_ = 0;
 };
