@@ -120,6 +120,7 @@ void runPatch(const PatchOptions& opt) {
   // The scene after K steps, and contact I of that step.
   const SceneDesc scene = loadScene(opt.scene);
   std::unique_ptr<World> world = instantiate(scene, {frictionProviders()});
+  printWarnings(*world);
   for (int k = 0; k < opt.step; ++k) world->step();
   const std::vector<Contact>& contacts = world->contacts();
   if (opt.contact >= static_cast<int>(contacts.size())) {

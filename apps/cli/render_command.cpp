@@ -124,9 +124,10 @@ void runRender(const RenderCommandOptions& o) {
   SceneDesc scene = loadScene(o.scene);
   if (!o.sampler.empty()) {
     checkSampler(providers, o.sampler);  // names the known ones
-    scene.sampler = o.sampler;
+    scene.friction_provider = o.sampler;
   }
   std::unique_ptr<World> world = instantiate(scene, {providers});
+  printWarnings(*world);
 
   // Headless context and renderer.
   gl::GlContext context;
@@ -193,7 +194,8 @@ void registerRenderCommand(CLI::App& app) {
   sub->add_option("--layers", opt->layers,
                   "Debug layers: contacts,frames,cones,patches (or all, none)")
       ->capture_default_str();
-  sub->add_option("--sampler", opt->sampler, "Friction sampler replacing the scene's");
+  sub->add_option("--sampler", opt->sampler,
+                  "Friction provider replacing the scene's friction_provider");
   sub->add_option("--samples", opt->samples, "MSAA samples per pixel")
       ->check(CLI::Range(1, 16))
       ->capture_default_str();

@@ -25,8 +25,9 @@ struct SweepOptions {
 };
 
 void runSweep(const SweepOptions& opt) {
-  // The scene must load as it is (the loader's message names the culprit) before varying it.
-  loadScene(opt.scene);
+  // The scene must load as it is (the loader's message names the culprit) before varying it;
+  // its warnings are printed once, not once per sample.
+  for (const std::string& warning : loadScene(opt.scene).warnings) printWarning(warning);
   std::ifstream in(opt.scene);
   SweepDesc desc;
   desc.scene = nlohmann::json::parse(in);

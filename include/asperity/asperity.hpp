@@ -4,6 +4,7 @@
 // (asperity/render/*.hpp, target asperity::render) have their own headers and targets.
 #pragma once
 
+#include "asperity/diagnostics.hpp"
 #include "asperity/error.hpp"
 #include "asperity/math/types.hpp"
 

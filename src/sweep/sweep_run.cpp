@@ -65,8 +65,9 @@ Sweep::Sweep(SweepDesc desc) : desc_(std::move(desc)) {
   // The scene itself must load; its bodies name the pose columns and the measures.
   const SceneDesc scene = parseScene(desc_.scene, desc_.scene_file);
   // Pool threads have no OpenGL context: only the core's samplers run in a sweep.
-  if (scene.sampler != "constant" && scene.sampler != "cone" && scene.sampler != "cpu")
-    throw Error(desc_.scene_file + ": sampler \"" + scene.sampler +
+  if (scene.friction_provider != "constant" && scene.friction_provider != "cone" &&
+      scene.friction_provider != "cpu")
+    throw Error(desc_.scene_file + ": sampler \"" + scene.friction_provider +
                 "\" cannot run in a sweep (available: constant, cone, cpu)");
   for (const BodyDesc& b : scene.bodies) body_names_.push_back(b.name);
   for (const std::string& m : desc_.measures) measures_.push_back(resolveMeasure(m, body_names_));
