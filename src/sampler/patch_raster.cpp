@@ -523,7 +523,7 @@ ASPERITY_TARGET_AVX2 void rasterisePlanarAvx2(const Volume& volume, const Planar
 
 void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, SurfaceRaster& raster) {
 #if ASPERITY_AVX2_COPIES
-  if (simd::avx2()) return rasterisePlanarAvx2(volume, prim, id, raster);
+  if (simd::avx2(volume.simd)) return rasterisePlanarAvx2(volume, prim, id, raster);
 #endif
   rasterisePlanarBody(volume, prim, id, raster);
 }
