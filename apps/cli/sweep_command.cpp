@@ -4,6 +4,8 @@
 #include <fstream>
 #include <memory>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "asperity/error.hpp"
 #include "asperity/scene/scene.hpp"
@@ -25,19 +27,15 @@ struct SweepOptions {
 };
 
 // This command's option for each field of a sweep's description.
-const char* flagOf(SweepField field) {
-  switch (field) {
-    case SweepField::Vary:
-      return "--vary";
-    case SweepField::Measures:
-      return "--measure";
-    case SweepField::Samples:
-      return "--samples";
-    case SweepField::Seconds:
-      return "--seconds";
-    case SweepField::Threads:
-      return "--threads";
-  }
+constexpr std::pair<SweepField, const char*> kFlags[] = {{SweepField::Vary, "--vary"},
+                                                         {SweepField::Measures, "--measure"},
+                                                         {SweepField::Samples, "--samples"},
+                                                         {SweepField::Seconds, "--seconds"},
+                                                         {SweepField::Threads, "--threads"}};
+
+std::string flagOf(SweepField field) {
+  for (const auto& [f, flag] : kFlags)
+    if (f == field) return flag;
   return "sweep";
 }
 
