@@ -33,8 +33,8 @@ config='{Checks: "-*,readability-function-size", CheckOptions: [{key: readabilit
 run-clang-tidy -quiet -j "$jobs" -p "$build" -config="$config" \
   -header-filter="^$root/(src|apps|include|python/src)/" \
   "^$root/(src|apps|python/src)/" > "$log" 2>/dev/null || true
-# clang-tidy's warning names the function; its note below gives the count.
-awk -v root="$root/" '
+# clang-tidy's warning names the function; its note below gives the count (colours removed).
+sed 's/\x1b\[[0-9;]*m//g' "$log" | awk -v root="$root/" '
   /warning: function .* exceeds recommended size/ {
     where = $1; sub(root, "", where); sub(/:[0-9]+:$/, "", where)
     match($0, /function [^ ]+/); name = substr($0, RSTART + 9, RLENGTH - 9)
@@ -45,7 +45,7 @@ awk -v root="$root/" '
     key = where " " name
     if (!(key in seen)) { seen[key] = 1; print where ": function " name ": " n }
     where = ""
-  }' "$log" | sort > "$log.out"
+  }' | sort > "$log.out"
 if [ -s "$log.out" ]; then
   cat "$log.out"
   over=1

@@ -34,11 +34,11 @@ std::array<FaceCorner, 4> boxFaceCorners(const Shape& box, const Placement& pl, 
   const SurfaceFrame tex = rotateTexture(face.frame, box.surface.texture_rotation);
   static constexpr double su[4] = {-1, 1, 1, -1}, sv[4] = {-1, -1, 1, 1};
   // uv through the face's (rotated) texture axes; the frame is the face's, rotated.
+  const Vec3 tc = pl.m * tex.t, bc = pl.m * tex.b;
   std::array<FaceCorner, 4> corners;
   for (size_t k = 0; k < 4; ++k) {
     const Vec3 p = face.centre + su[k] * face.et + sv[k] * face.eb;
-    corners[k] = {pl.m * p + pl.o, scale * p.dot(tex.t), scale * p.dot(tex.b),
-                  pl.m * tex.t,    pl.m * tex.b,         face.normal};
+    corners[k] = {pl.m * p + pl.o, scale * p.dot(tex.t), scale * p.dot(tex.b), tc, bc, face.normal};
   }
   return corners;
 }
