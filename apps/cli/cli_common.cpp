@@ -9,7 +9,7 @@
 #include "asperity/error.hpp"
 #include "asperity/world/world.hpp"
 #ifdef ASPERITY_HAVE_GL
-#include "asperity/sampler/gl_patch_sampler.hpp"
+#include "asperity/scene/gl_sampler_provider.hpp"
 #endif
 
 namespace asperity::cli {

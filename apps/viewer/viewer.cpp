@@ -14,6 +14,7 @@
 #include "asperity/error.hpp"
 #include "asperity/gl/context.hpp"
 #include "asperity/sampler/gl_patch_sampler.hpp"
+#include "asperity/scene/gl_sampler_provider.hpp"
 
 namespace asperity::viewer {
 namespace {

@@ -10,7 +10,7 @@
 #include "asperity/world/run_loop.hpp"
 #include "world_state.hpp"
 #ifdef ASPERITY_HAVE_RENDER
-#include "asperity/sampler/gl_patch_sampler.hpp"
+#include "asperity/scene/gl_sampler_provider.hpp"
 #endif
 
 namespace asperity::python {

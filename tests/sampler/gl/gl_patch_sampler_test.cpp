@@ -7,6 +7,7 @@
 
 #include "asperity/gl/context.hpp"
 #include "asperity/sampler/cpu_patch_sampler.hpp"
+#include "asperity/scene/gl_sampler_provider.hpp"
 #include "asperity/scene/scene.hpp"
 #include "parallel/thread_pool.hpp"
 #include "sampler/sampler_suite.hpp"
