@@ -24,6 +24,7 @@ struct SweepOptions {
   int threads = 0;
   double seconds = 1.0;
   std::string out;
+  bool resume = false;
 };
 
 // This command's option for each field of a sweep's description.
@@ -61,12 +62,13 @@ Sweep planSweep(const SweepOptions& opt) {
 void runSweep(const SweepOptions& opt) {
   try {
     const Sweep sweep = planSweep(opt);
-    // Prove the output can be written before the runs.
-    std::ofstream out(opt.out, std::ios::binary);
-    if (!out) throw Error("--out: cannot open \"" + opt.out + "\" for writing");
-    const std::vector<SampleResult> results = sweep.runAll(opt.threads);
-    out << sweep.csv(results);
-    if (!out) throw Error("--out: write to \"" + opt.out + "\" failed");
+    // Each row reaches the file as soon as it and every lower one are done; the library's
+    // messages name the file, this command's name its option too.
+    try {
+      runSweepToFile(sweep, {opt.out, opt.threads, opt.resume});
+    } catch (const SweepFileError& e) {
+      throw Error("--out " + std::string(e.what()));
+    }
   } catch (const SweepError& e) {
     // The library names the description's fields; the user wrote this command's options.
     throw Error(e.messageNaming(flagOf(e.field())));
@@ -99,7 +101,11 @@ void registerSweepCommand(CLI::App& app) {
   sub->add_option("--seconds", opt->seconds, "Simulated time per sample (s)")
       ->check(numberInRange(0.0, 1e6))
       ->capture_default_str();
-  sub->add_option("--out", opt->out, "Results CSV")->required();
+  sub->add_option("--out", opt->out, "Results CSV, written row by row as samples finish")
+      ->required();
+  sub->add_flag("--resume", opt->resume,
+                "Continue a killed sweep from the rows --out holds (same arguments); the file "
+                "ends byte-identical to an uninterrupted run's");
   sub->callback([opt] { runSweep(*opt); });
 }
 

@@ -69,7 +69,7 @@ def _check_int(value, name, low):
 
 
 def sweep(scene, vary=None, samples=1, seconds=1.0, seed=1, measure=(), threads=0,
-          client=None, out=None):
+          client=None, out=None, resume=False):
     """Runs `samples` independent worlds of `scene`, each with its own values of `vary`.
 
     scene: a path, a dict or an asperity.Scene. vary: {json_path: spec}, json_path a JSON
@@ -87,7 +87,10 @@ def sweep(scene, vary=None, samples=1, seconds=1.0, seed=1, measure=(), threads=
 
     Returns a dict of NumPy arrays keyed by column: 'sample', the varied paths, each body's
     'NAME.x' ... 'NAME.qz', the measures, 'state_hash' (16 hex digits, as `asperity run
-    --hash`). out: also write the table as CSV to this path.
+    --hash`). out: also write the table as CSV to this path; with named measures only and no
+    client, each sample's row reaches the file as soon as it and every lower one are done (as
+    `asperity sweep --out`), and resume=True continues a killed sweep from the rows the file
+    holds, giving the bytes of an uninterrupted run.
     """
     samples = _check_int(samples, "samples", 1)
     seed = _check_int(seed, "seed", 0)
@@ -98,6 +101,12 @@ def sweep(scene, vary=None, samples=1, seconds=1.0, seed=1, measure=(), threads=
     text, scene_file = _scene_source(scene)
     args = (text, scene_file, _vary_pairs(vary or {}), samples, seed, float(seconds), names)
     core = _Sweep(*args)  # checks everything before any sample runs
+    if resume and (out is None or callables or client is not None):
+        raise ValueError("resume=True needs out= and runs named measures on threads only "
+                         "(no callables, no client)")
+    if out is not None and not callables and client is None:
+        core.run_to_file(os.fspath(out), threads, bool(resume))
+        return _read_csv(out)
     if client is None:
         columns, state = core.run([], threads)
     else:
@@ -156,6 +165,19 @@ def _apply_callables(columns, state, callables, body_names, paths):
     for key in rows[0]:
         columns[key] = np.array([r[key] for r in rows], dtype=np.float64)
     columns["state_hash"] = hashes
+
+
+def _read_csv(path):
+    """A sweep's CSV as the columns sweep() returns: 'sample' int64, numbers float64,
+    'state_hash' 16 hex digits."""
+    with open(path, encoding="utf-8") as f:
+        keys = f.readline().rstrip("\n").split(",")
+        rows = [line.rstrip("\n").split(",") for line in f]
+    columns = {"sample": np.array([int(r[0]) for r in rows], dtype=np.int64)}
+    for j, key in enumerate(keys[1:-1], start=1):
+        columns[key] = np.array([float(r[j]) for r in rows], dtype=np.float64)
+    columns["state_hash"] = np.array([r[-1] for r in rows], dtype="U16")
+    return columns
 
 
 def write_csv(columns, path):

@@ -105,7 +105,16 @@ void bindSweep(py::module_& m) {
             }
             return sweep.csv(results);
           },
-          py::arg("indices"), py::arg("threads"), "Runs the samples; returns the CLI's CSV.");
+          py::arg("indices"), py::arg("threads"), "Runs the samples; returns the CLI's CSV.")
+      .def(
+          "run_to_file",
+          [](const Sweep& sweep, const std::string& path, int threads, bool resume) {
+            py::gil_scoped_release release;
+            return runSweepToFile(sweep, {path, threads, resume});
+          },
+          py::arg("path"), py::arg("threads"), py::arg("resume"),
+          "Runs the sweep into a CSV file row by row (resume: continue a killed one); returns "
+          "how many samples ran now.");
 }
 
 }  // namespace asperity::python

@@ -91,3 +91,38 @@ def test_dask_sweep_equals_the_threaded_sweep(minimal_scene):
     assert list(on_cluster) == list(local)
     for key in local:
         np.testing.assert_array_equal(on_cluster[key], local[key])
+
+
+def test_a_killed_sweep_resumes_to_the_bytes_of_one_run(tmp_path):
+    """A child process running sweep(out=) is killed mid-run; resume=True finishes the file."""
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    scene = str(SCENES / "examples" / "minimal.json")
+    kwargs = dict(vary={"/bodies/*/linear_velocity/0": "uniform(0.5,2)"}, samples=80,
+                  seconds=0.5, seed=5, measure="distance:box", threads=1)
+    whole = tmp_path / "whole.csv"
+    columns = asperity.sweep(scene, out=str(whole), **kwargs)
+    killed = tmp_path / "killed.csv"
+    code = ("import asperity, sys; asperity.sweep(sys.argv[1], out=sys.argv[2], "
+            f"**{kwargs!r})")
+    child = subprocess.Popen([sys.executable, "-c", code, scene, str(killed)],
+                             env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)))
+    deadline = time.monotonic() + 30
+    while time.monotonic() < deadline and (
+            not killed.exists() or killed.read_bytes().count(b"\n") < 20):
+        time.sleep(0.002)
+    child.send_signal(signal.SIGKILL)
+    child.wait()
+    left = killed.read_bytes()
+    assert left.endswith(b"\n") and whole.read_bytes().startswith(left)
+    assert len(left) < len(whole.read_bytes())
+    resumed = asperity.sweep(scene, out=str(killed), resume=True, **kwargs)
+    assert killed.read_bytes() == whole.read_bytes()
+    np.testing.assert_array_equal(resumed["state_hash"], columns["state_hash"])
+    np.testing.assert_array_equal(resumed["box.x"], columns["box.x"])
+    with pytest.raises(ValueError, match="resume=True needs out="):
+        asperity.sweep(scene, resume=True, **kwargs)

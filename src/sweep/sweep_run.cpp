@@ -3,10 +3,14 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <atomic>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <numeric>
 
@@ -143,6 +147,71 @@ std::vector<SampleResult> Sweep::runAll(int threads, std::span<const int64_t> in
   return results;
 }
 
+// Hands results to `emit` in index order from whichever worker completes the next one.
+class InOrder {
+ public:
+  InOrder(int64_t first, const std::function<void(const SampleResult&)>& emit)
+      : next_(first), emit_(emit) {}
+
+  void done(SampleResult result) {
+    const std::lock_guard lock(mutex_);
+    waiting_.emplace(result.index, std::move(result));
+    while (!waiting_.empty() && waiting_.begin()->first == next_ && next_ < failed_at_) {
+      emit_(waiting_.begin()->second);
+      waiting_.erase(waiting_.begin());
+      ++next_;
+    }
+  }
+  // Keeps the lowest failing sample's error; rows stop before it.
+  void failed(int64_t index, std::exception_ptr error) {
+    const std::lock_guard lock(mutex_);
+    if (index < failed_at_) {
+      failed_at_ = index;
+      error_ = error;
+    }
+  }
+  bool failedBefore(int64_t index) {
+    const std::lock_guard lock(mutex_);
+    return failed_at_ < index;
+  }
+  void rethrow() const {
+    if (error_) std::rethrow_exception(error_);
+  }
+
+ private:
+  std::mutex mutex_;
+  std::map<int64_t, SampleResult> waiting_;
+  int64_t next_;
+  int64_t failed_at_ = INT64_MAX;
+  std::exception_ptr error_;
+  const std::function<void(const SampleResult&)>& emit_;
+};
+
+void Sweep::runInOrder(int threads, int64_t first,
+                       const std::function<void(const SampleResult&)>& emit) const {
+  if (threads < 0) throw SweepError(SweepField::Threads, "", "must be >= 0 (0 = every core)");
+  if (first < 0 || first > desc_.samples)
+    throw Error("first sample " + std::to_string(first) + " is outside 0.." +
+                std::to_string(desc_.samples));
+  // Each worker takes the next index in turn, so rows finish close to their order and few
+  // wait for a lower one.
+  std::atomic<int64_t> counter{first};
+  InOrder order(first, emit);
+  tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : threads);
+  arena.execute([&] {
+    tbb::parallel_for(0, arena.max_concurrency(), [&](int) {
+      for (int64_t i = counter++; i < desc_.samples && !order.failedBefore(i); i = counter++) {
+        try {
+          order.done(run(i));
+        } catch (...) {
+          order.failed(i, std::current_exception());
+        }
+      }
+    });
+  });
+  order.rethrow();
+}
+
 std::vector<std::string> Sweep::columns() const {
   std::vector<std::string> names = {"sample"};
   for (const Variation& v : desc_.vary) names.push_back(v.path);
@@ -153,29 +222,34 @@ std::vector<std::string> Sweep::columns() const {
   return names;
 }
 
-std::string Sweep::csv(std::span<const SampleResult> results) const {
+std::string Sweep::csvHeader() const {
   std::string text;
-  // Header.
   const std::vector<std::string> names = columns();
   for (size_t i = 0; i < names.size(); ++i) text += (i ? "," : "") + names[i];
-  text += '\n';
-  // One row per sample: index, values, poses, measures, hash.
-  for (const SampleResult& r : results) {
-    text += std::to_string(r.index);
-    auto add = [&text](double x) {
-      text += ',';
-      appendNumber(text, x);
-    };
-    for (double v : r.values) add(v);
-    for (const Transform& p : r.poses) {
-      for (int k = 0; k < 3; ++k) add(p.position[k]);
-      for (double q : {p.rotation.w(), p.rotation.x(), p.rotation.y(), p.rotation.z()}) add(q);
-    }
-    for (double m : r.measures) add(m);
-    char hash[20];
-    std::snprintf(hash, sizeof(hash), ",%016llx\n", static_cast<unsigned long long>(r.state_hash));
-    text += hash;
+  return text + '\n';
+}
+
+std::string Sweep::csvRow(const SampleResult& r) const {
+  // Index, values, poses, measures, hash.
+  std::string text = std::to_string(r.index);
+  auto add = [&text](double x) {
+    text += ',';
+    appendNumber(text, x);
+  };
+  for (double v : r.values) add(v);
+  for (const Transform& p : r.poses) {
+    for (int k = 0; k < 3; ++k) add(p.position[k]);
+    for (double q : {p.rotation.w(), p.rotation.x(), p.rotation.y(), p.rotation.z()}) add(q);
   }
+  for (double m : r.measures) add(m);
+  char hash[20];
+  std::snprintf(hash, sizeof(hash), ",%016llx\n", static_cast<unsigned long long>(r.state_hash));
+  return text + hash;
+}
+
+std::string Sweep::csv(std::span<const SampleResult> results) const {
+  std::string text = csvHeader();
+  for (const SampleResult& r : results) text += csvRow(r);
   return text;
 }
 

@@ -1,9 +1,16 @@
 // `asperity sweep`: the same bytes on 1 and 2 threads, one row per sample whose hash equals
 // `asperity run --hash` of the varied scene, and one test per bad input.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "cli/cli_test_support.hpp"
 
@@ -55,6 +62,63 @@ TEST(SweepCommand, RowHashEqualsRunOfTheVariedScene) {
   EXPECT_EQ(r.out, hash + "\n");
 }
 
+// Lines of a file (0 when it does not exist yet).
+long lineCount(const std::string& path) {
+  const std::string text = std::filesystem::exists(path) ? slurpBinary(path) : "";
+  return std::count(text.begin(), text.end(), '\n');
+}
+
+// `asperity ARGS` started in the background, killed with SIGKILL once `path` has `lines`
+// lines (or after 20 s).
+void killWhenWritten(const std::vector<std::string>& args, const std::string& path, long lines) {
+  std::vector<std::string> argv_text = {std::string(ASPERITY_BIN_DIR) + "/asperity"};
+  argv_text.insert(argv_text.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : argv_text) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ), 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (lineCount(path) < lines && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+}
+
+TEST(SweepCommand, AKilledSweepKeepsItsRowsAndResumesToTheBytesOfOneRun) {
+  const std::string dir = test::tempDir("sweep_kill");
+  auto args = [&](const std::string& out, const std::string& threads) {
+    return std::vector<std::string>{
+        "sweep",     minimal(), "--vary",    "/bodies/*/linear_velocity/0=uniform(0.5,1.5)",
+        "--samples", "60",      "--seconds", "0.5",
+        "--seed",    "2",       "--threads", threads,
+        "--out",     out};
+  };
+  ASSERT_EQ(runCli(args(dir + "/whole.csv", "2")).exit_code, 0);
+  const std::string whole = slurpBinary(dir + "/whole.csv");
+  // Killed at several moments, on one and two threads.
+  for (const long lines : {2L, 9L, 31L}) {
+    for (const std::string threads : {"1", "2"}) {
+      const std::string out = dir + "/killed.csv";
+      std::filesystem::remove(out);
+      killWhenWritten(args(out, threads), out, lines);
+      // What the kill left: whole rows only, the first ones of the uninterrupted table.
+      const std::string left = slurpBinary(out);
+      ASSERT_FALSE(left.empty());
+      EXPECT_LT(left.size(), whole.size()) << "killed after the sweep ended";
+      EXPECT_TRUE(std::filesystem::exists(out + ".sweep"));
+      EXPECT_EQ(left.back(), '\n');
+      EXPECT_EQ(whole.compare(0, left.size(), left), 0) << lines << " lines, " << threads;
+      auto resume = args(out, threads == "1" ? "2" : "1");
+      resume.push_back("--resume");
+      const auto r = runCli(resume);
+      ASSERT_EQ(r.exit_code, 0) << r.err;
+      EXPECT_EQ(slurpBinary(out), whole) << lines << " lines, " << threads;
+    }
+  }
+}
+
 TEST(SweepCommand, BadInputsAreOneLineErrors) {
   const std::string out = test::tempDir("sweep_bad") + "/s.csv";
   expectOneLineError(runCli({"sweep", "missing.json", "--out", out}), "missing.json");
@@ -73,6 +137,13 @@ TEST(SweepCommand, BadInputsAreOneLineErrors) {
   expectOneLineError(runCli({"sweep", minimal(), "--seconds", "nan", "--out", out}), "--seconds");
   expectOneLineError(runCli({"sweep", minimal()}), "--out");
   expectOneLineError(runCli({"sweep", minimal(), "--out", "/no/such/dir/s.csv"}), "--out");
+  expectOneLineError(runCli({"sweep", minimal(), "--out", "/dev/full"}),
+                     "--out /dev/full: write failed");
+  // A resume with other arguments than the killed sweep's names the journal and the field.
+  const std::string dir = test::tempDir("sweep_resume_bad");
+  ASSERT_EQ(runCli(sweepArgs(dir + "/s.csv", "1")).exit_code, 0);
+  expectOneLineError(runCli({"sweep", minimal(), "--out", dir + "/none.csv", "--resume"}),
+                     "does not exist");
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
 #include <span>
@@ -111,12 +112,21 @@ class Sweep {
   // core); results come back in the order of `indices`, identical for any thread count.
   // Throws SweepError (SweepField::Threads) for a negative thread count.
   std::vector<SampleResult> runAll(int threads, std::span<const int64_t> indices = {}) const;
+  // Runs samples first .. samples - 1 on `threads` threads (0 = every core), taken in index
+  // order, and hands each result to `emit` in index order as soon as it and every lower one
+  // are done (`emit` runs on one thread at a time). When a sample fails, the ones below it
+  // are still handed over, then its error is thrown (the lowest failing index's).
+  void runInOrder(int threads, int64_t first,
+                  const std::function<void(const SampleResult&)>& emit) const;
 
   // Column names of the table: sample, the variations' paths, each body's
   // NAME.x .. NAME.qz, the measures, state_hash.
   std::vector<std::string> columns() const;
   // The table as CSV (header, then one row per result; numbers in shortest round-trip form).
   std::string csv(std::span<const SampleResult> results) const;
+  // Its header line and one result's row, each ending in a newline.
+  std::string csvHeader() const;
+  std::string csvRow(const SampleResult& result) const;
 
  private:
   SweepDesc desc_;
@@ -128,5 +138,32 @@ class Sweep {
   std::shared_ptr<SceneResources> resources_ = std::make_shared<SceneResources>();
   int64_t steps_ = 0;
 };
+
+// A sweep written to a CSV file as it runs (`asperity sweep --out`, Python's sweep(out=)):
+// the header first, then each sample's row as soon as it and every lower one are done, each
+// row one write, so a process killed at any moment leaves a valid CSV of every sample it
+// finished, in order. Beside a regular file, PATH.sweep (the journal) describes the sweep
+// while it runs and is removed when it ends; `resume` continues a killed sweep from the rows
+// the file holds and gives the bytes of an uninterrupted run, for any thread count.
+struct SweepFileOptions {
+  std::string path;
+  int threads = 0;      // 0 = every core
+  bool resume = false;  // continue the sweep the file and its journal hold
+};
+// A results file or its journal that cannot be written, read or resumed; what() names the file.
+class SweepFileError : public Error {
+ public:
+  using Error::Error;
+};
+// The journal's path for a results file, and what it holds for a sweep while the sweep runs
+// (JSON: the scene file and a hash of its text, the variations, samples, seed, seconds and
+// measures).
+std::string sweepJournalPath(const std::string& path);
+std::string sweepJournal(const Sweep& sweep);
+// Runs the sweep into options.path; returns how many samples ran now (0: a resumed file was
+// complete). Throws SweepFileError naming the file: it cannot be written, or (resume) it or
+// its journal belongs to another sweep, is missing, or is not this sweep's table; and what
+// Sweep::runInOrder throws for a failing sample, after the rows below it are written.
+int64_t runSweepToFile(const Sweep& sweep, const SweepFileOptions& options);
 
 }  // namespace asperity

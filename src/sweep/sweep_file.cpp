@@ -1,0 +1,195 @@
+// A sweep written to its CSV file as it runs, and resumed from it (sweep.hpp, SweepFileOptions).
+// Rows go out with one write(2) each, straight to the kernel: a killed process leaves whole
+// rows only. The journal beside the file names the sweep, so that a resume with other
+// arguments is refused instead of mixing two sweeps in one table.
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "asperity/error.hpp"
+#include "asperity/sweep/sweep.hpp"
+
+namespace asperity {
+namespace {
+
+constexpr int kJournalFormat = 1;
+
+// FNV-1a of the scene's text: the journal names the scene without copying it.
+std::string textHash(const std::string& text) {
+  uint64_t hash = 1469598103934665603ull;
+  for (const unsigned char c : text) {
+    hash ^= c;
+    hash *= 1099511628211ull;
+  }
+  char out[20];
+  std::snprintf(out, sizeof(out), "%016llx", static_cast<unsigned long long>(hash));
+  return out;
+}
+
+// What makes a sweep's table: the journal's content.
+nlohmann::json journalOf(const Sweep& sweep) {
+  const SweepDesc& d = sweep.desc();
+  nlohmann::json vary = nlohmann::json::array();
+  for (const Variation& v : d.vary)
+    vary.push_back(
+        {{"path", v.path}, {"distribution", static_cast<int>(v.distribution)}, {"args", v.args}});
+  return {{"format", kJournalFormat},
+          {"scene_file", d.scene_file},
+          {"scene_hash", textHash(d.scene_json)},
+          {"vary", vary},
+          {"samples", d.samples},
+          {"seed", d.seed},
+          {"seconds", d.seconds},
+          {"measures", d.measures}};
+}
+
+[[noreturn]] void failOn(const std::string& path, const std::string& what) {
+  throw SweepFileError(path + ": " + what);
+}
+
+// The whole of `text` written to `fd`, or an error naming the file and the reason.
+void writeAll(int fd, const std::string& text, const std::string& path) {
+  size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) failOn(path, std::string("write failed: ") + std::strerror(errno));
+    done += static_cast<size_t>(n);
+  }
+}
+
+// An open file descriptor, closed on every path out.
+class File {
+ public:
+  File(const std::string& path, int flags) : path_(path), fd_(::open(path.c_str(), flags, 0644)) {
+    if (fd_ < 0) failOn(path, std::string("cannot open for writing: ") + std::strerror(errno));
+  }
+  ~File() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  File(const File&) = delete;
+  File& operator=(const File&) = delete;
+  void write(const std::string& text) const { writeAll(fd_, text, path_); }
+  bool regular() const {
+    struct stat st {};
+    return ::fstat(fd_, &st) == 0 && S_ISREG(st.st_mode);
+  }
+  // Written to the disk, not only to the kernel (at the end of a sweep).
+  void sync() const {
+    if (regular() && ::fsync(fd_) != 0)
+      failOn(path_, std::string("write failed: ") + std::strerror(errno));
+  }
+
+ private:
+  std::string path_;
+  int fd_;
+};
+
+// The journal written atomically: a temporary file renamed into place.
+void writeJournal(const std::string& path, const std::string& journal) {
+  const std::string temporary = path + ".tmp";
+  {
+    File file(temporary, O_WRONLY | O_CREAT | O_TRUNC);
+    file.write(journal);
+    file.sync();
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0)
+    failOn(path, std::string("cannot write: ") + std::strerror(errno));
+}
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) failOn(path, "cannot be read");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The first key whose value differs between two journals ("" when none).
+std::string firstDifference(const nlohmann::json& a, const nlohmann::json& b) {
+  for (const auto& [key, value] : a.items())
+    if (!b.contains(key) || b[key] != value) return key;
+  return "";
+}
+
+// Length of the file's complete rows (header included), checking each is the next sample.
+// Returns the count of sample rows in `rows`.
+size_t completeLength(const std::string& text, const std::string& header, const std::string& path,
+                      int64_t& rows) {
+  if (text.compare(0, header.size(), header) != 0)
+    failOn(path, "its header is not this sweep's columns: cannot resume");
+  size_t end = header.size();
+  rows = 0;
+  for (size_t newline; (newline = text.find('\n', end)) != std::string::npos; end = newline + 1) {
+    const std::string prefix = std::to_string(rows) + ",";
+    if (text.compare(end, prefix.size(), prefix) != 0)
+      failOn(path, "row " + std::to_string(rows + 2) + " is not sample " + std::to_string(rows));
+    ++rows;
+  }
+  return end;
+}
+
+// Where a resumed sweep starts: the file cut after its last whole row. -1: already complete.
+int64_t resumePoint(const Sweep& sweep, const std::string& path, const std::string& journal) {
+  const std::string text = readText(path);
+  int64_t rows = 0;
+  const size_t length = completeLength(text, sweep.csvHeader(), path, rows);
+  if (!std::filesystem::exists(journal)) {
+    if (rows == sweep.desc().samples && length == text.size()) return -1;
+    failOn(path, "nothing to resume: its journal " + journal + " is missing");
+  }
+  const nlohmann::json written = nlohmann::json::parse(readText(journal), nullptr, false);
+  if (written.is_discarded()) failOn(journal, "not a sweep journal (not valid JSON)");
+  const std::string differs = firstDifference(journalOf(sweep), written);
+  if (!differs.empty())
+    failOn(journal, "written by another sweep (its " + differs +
+                        " differs): run it again with the same arguments, or without resuming");
+  if (rows > sweep.desc().samples) failOn(path, "holds more rows than the sweep has samples");
+  std::error_code error;
+  std::filesystem::resize_file(path, length, error);
+  if (error) failOn(path, "cannot be cut after its last whole row: " + error.message());
+  return rows;
+}
+
+}  // namespace
+
+std::string sweepJournalPath(const std::string& path) {
+  return path + ".sweep";
+}
+
+std::string sweepJournal(const Sweep& sweep) {
+  return journalOf(sweep).dump(2) + "\n";
+}
+
+int64_t runSweepToFile(const Sweep& sweep, const SweepFileOptions& options) {
+  const std::string& path = options.path;
+  const std::string journal = sweepJournalPath(path);
+  int64_t first = 0;
+  if (options.resume) {
+    if (!std::filesystem::exists(path)) failOn(path, "nothing to resume: the file does not exist");
+    first = resumePoint(sweep, path, journal);
+    if (first < 0) return 0;
+  }
+  const File out(path, O_WRONLY | O_CREAT | (options.resume ? O_APPEND : O_TRUNC));
+  // Only a regular file can be resumed, so only it gets a journal (not /dev/stdout).
+  const bool journaled = out.regular();
+  if (!options.resume) {
+    out.write(sweep.csvHeader());
+    if (journaled) writeJournal(journal, sweepJournal(sweep));
+  }
+  sweep.runInOrder(options.threads, first,
+                   [&](const SampleResult& r) { out.write(sweep.csvRow(r)); });
+  out.sync();
+  std::error_code ignored;  // a journal left behind only allows a (no-op) resume
+  if (journaled) std::filesystem::remove(journal, ignored);
+  return sweep.desc().samples - first;
+}
+
+}  // namespace asperity

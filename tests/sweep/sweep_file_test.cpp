@@ -1,0 +1,133 @@
+// Sweeps written to their file as they run: rows in order as samples finish, a file cut at any
+// byte (as a killed process leaves it) resumed to the bytes of an uninterrupted run on any
+// thread count, and resumes that would mix two sweeps refused.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "asperity/error.hpp"
+#include "asperity/sweep/sweep.hpp"
+#include "support/test_support.hpp"
+
+namespace asperity {
+namespace {
+
+SweepDesc boxes(uint64_t seed = 3) {
+  SweepDesc d;
+  d.scene_json = R"({
+    "settings": {"friction_provider": "constant", "mu0": 0.4, "dt": 0.01},
+    "bodies": [
+      {"name": "ground", "type": "static", "shapes": [{"type": "plane"}]},
+      {"name": "box", "position": [0, 0, 0.1], "linear_velocity": [1, 0, 0],
+       "shapes": [{"type": "box", "half_extents": [0.1, 0.1, 0.1]}]}]})";
+  d.scene_file = "boxes.json";
+  d.vary = {parseVariation("/bodies/*/linear_velocity/0=uniform(0.5,2)")};
+  d.samples = 12;
+  d.seed = seed;
+  d.seconds = 0.2;
+  d.measures = {"distance:box"};
+  return d;
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void write(const std::string& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+TEST(SweepFile, RowsReachTheFileInOrderAsTheTableOfRunAll) {
+  const Sweep sweep(boxes());
+  const std::string path = test::tempDir("sweep_file") + "/rows.csv";
+  std::vector<int64_t> order;
+  sweep.runInOrder(2, 0, [&](const SampleResult& r) { order.push_back(r.index); });
+  for (size_t i = 0; i < order.size(); ++i) EXPECT_EQ(order[i], static_cast<int64_t>(i));
+  EXPECT_EQ(runSweepToFile(sweep, {path, 2, false}), 12);
+  EXPECT_EQ(slurp(path), sweep.csv(sweep.runAll(1)));
+  // The journal is gone once the sweep ends.
+  EXPECT_FALSE(std::filesystem::exists(sweepJournalPath(path)));
+}
+
+TEST(SweepFile, AFileCutAnywhereResumesToTheBytesOfOneRun) {
+  const Sweep sweep(boxes());
+  const std::string dir = test::tempDir("sweep_cut");
+  const std::string whole = dir + "/whole.csv";
+  runSweepToFile(sweep, {whole, 1, false});
+  const std::string expected = slurp(whole);
+  // Cuts at row ends and inside rows (a killed run leaves whole rows; a torn last row is cut
+  // away), each with the journal a running sweep keeps, resumed on 1 and 3 threads.
+  const std::string killed = dir + "/killed.csv";
+  for (size_t cut = sweep.csvHeader().size(); cut <= expected.size(); cut += 37) {
+    for (const int threads : {1, 3}) {
+      write(killed, expected.substr(0, cut));
+      write(sweepJournalPath(killed), sweepJournal(sweep));
+      runSweepToFile(sweep, {killed, threads, true});
+      EXPECT_EQ(slurp(killed), expected) << "cut at " << cut << ", " << threads << " threads";
+      EXPECT_FALSE(std::filesystem::exists(sweepJournalPath(killed)));
+    }
+  }
+  // A finished file resumes to itself: nothing runs.
+  EXPECT_EQ(runSweepToFile(sweep, {killed, 2, true}), 0);
+  EXPECT_EQ(slurp(killed), expected);
+}
+
+// The message of the SweepFileError `work` throws.
+template <class Work>
+std::string fileError(const Work& work) {
+  try {
+    work();
+  } catch (const SweepFileError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(SweepFile, ResumesThatWouldMixTwoSweepsAreRefused) {
+  const Sweep sweep(boxes());
+  const std::string dir = test::tempDir("sweep_refused");
+  const std::string path = dir + "/s.csv";
+  runSweepToFile(sweep, {path, 1, false});
+  const std::string half = slurp(path).substr(0, slurp(path).size() / 2);
+  // Another seed's journal: named, with the field that differs.
+  write(path, half);
+  write(sweepJournalPath(path), sweepJournal(Sweep(boxes(4))));
+  const std::string seed = fileError([&] { runSweepToFile(sweep, {path, 1, true}); });
+  EXPECT_NE(seed.find(sweepJournalPath(path)), std::string::npos) << seed;
+  EXPECT_NE(seed.find("seed"), std::string::npos) << seed;
+  // No journal and an unfinished file; no file at all; another table's header.
+  std::filesystem::remove(sweepJournalPath(path));
+  EXPECT_NE(fileError([&] {
+              runSweepToFile(sweep, {path, 1, true});
+            }).find("journal"),
+            std::string::npos);
+  EXPECT_NE(fileError([&] {
+              runSweepToFile(sweep, {dir + "/none.csv", 1, true});
+            }).find("does not exist"),
+            std::string::npos);
+  write(path, "sample,x\n0,1\n");
+  write(sweepJournalPath(path), sweepJournal(sweep));
+  EXPECT_NE(fileError([&] {
+              runSweepToFile(sweep, {path, 1, true});
+            }).find("header"),
+            std::string::npos);
+  // A folder that does not exist.
+  EXPECT_NE(fileError([&] {
+              runSweepToFile(sweep, {dir + "/no/s.csv", 1, false});
+            }).find("cannot open"),
+            std::string::npos);
+}
+
+TEST(SweepFile, AFullDiskIsAnErrorNamingTheFile) {
+  const Sweep sweep(boxes());
+  const std::string message = fileError([&] { runSweepToFile(sweep, {"/dev/full", 1, false}); });
+  EXPECT_NE(message.find("/dev/full: write failed"), std::string::npos) << message;
+  EXPECT_FALSE(std::filesystem::exists("/dev/full.sweep"));
+}
+
+}  // namespace
+}  // namespace asperity
