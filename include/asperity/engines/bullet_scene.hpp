@@ -25,6 +25,10 @@ struct BulletSceneOptions {
   // false: plain Bullet, its own solver and friction (each contact gets mu0: every object's
   // friction is sqrt(mu0), and Bullet multiplies the two).
   bool asperity_friction = true;
+  // Plain Bullet with two friction directions per contact, as BulletFriction runs it
+  // (SOLVER_USE_2_FRICTION_DIRECTIONS); false: Bullet's default, one direction along the
+  // sliding velocity (no resistance across it).
+  bool two_friction_directions = true;
   // Overrides the scene's frame mode (e.g. Auto, whose t follows the sliding as Bullet's own
   // friction directions do).
   std::optional<FrameMode> frame_mode;

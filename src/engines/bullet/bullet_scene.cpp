@@ -151,6 +151,8 @@ BulletScene::BulletScene(const SceneDesc& scene, const BulletSceneOptions& optio
     ContactFrictionSettings settings = contactFrictionSettings(scene);
     if (options.frame_mode) settings.frame_mode = *options.frame_mode;
     m.friction = std::make_unique<BulletFriction>(m.world, settings);
+  } else if (options.two_friction_directions) {
+    m.world.getSolverInfo().m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
   }
   m.addBodies(scene, static_cast<btScalar>(std::sqrt(w.friction.mu0)));
 }
