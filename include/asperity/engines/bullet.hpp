@@ -20,9 +20,11 @@
 // clamps both senses to +-mu lambda_n). No global callback is used: worlds are independent.
 //
 // Conventions: Bullet's manifold point holds m_normalWorldOnB, the normal on body 1 pointing
-// toward body 0, and its friction rows push body 0 along +dir. So body 0 is A and body 1 is B
-// of SPEC 1, n = m_normalWorldOnB, and a row's positive impulse is the friction on A along
-// +t or +b, which mu_pos_t or mu_pos_b bounds. The depth is -getDistance() (>= 0 when
+// toward body 0, and its friction rows push body 0 along +dir. Body 0 is A and body 1 is B of
+// SPEC 1, n = m_normalWorldOnB, except that a lone dynamic object is A (Asperity's own rule,
+// which also keeps the patch sampler's work small): when body 0 is static or kinematic the
+// sides swap, n = -m_normalWorldOnB, and the bounds written to Bullet's rows are mirrored
+// (body 0's friction along +d is A's along -d). The depth is -getDistance() (>= 0 when
 // touching); the point is the midpoint of the two witness points.
 #pragma once
 

@@ -71,7 +71,12 @@ struct BulletFriction::Impl {
   std::unordered_map<const btCollisionObject*, Attached> objects;
   std::vector<const btCollisionObject*> by_id;  // ObjectId -> object (null once detached)
   std::vector<EngineContact> contacts;
-  std::vector<btManifoldPoint*> points;  // parallel to contacts
+  // Parallel to contacts: the manifold point, and whether body 0 is B there.
+  struct Point {
+    btManifoldPoint* point;
+    bool swapped;
+  };
+  std::vector<Point> points;
   std::span<const ContactFrictionResult> results;
   double last_ms = 0.0;
 
@@ -81,7 +86,8 @@ struct BulletFriction::Impl {
   ObjectId add(btCollisionObject* object, const ObjectDesc& desc);
   void update();
   void gather();
-  void gatherManifold(const btPersistentManifold& manifold, const Attached& a, const Attached& b);
+  void gatherManifold(const btPersistentManifold& manifold, const Attached& body0,
+                      const Attached& body1, bool swap);
   void writeBack();
   // Clears the frames set on the points of `object` (null: of every attached object).
   void clearFrames(const btCollisionObject* object);
@@ -129,27 +135,30 @@ void BulletFriction::Impl::gather() {
     if (!body0->isActive() && !body1->isActive()) continue;
     const auto a = objects.find(body0), b = objects.find(body1);
     if (a == objects.end() || b == objects.end()) continue;
-    gatherManifold(manifold, a->second, b->second);
+    // Asperity's A/B rule: a lone dynamic object is A (the patch sampler rasterises A whole
+    // and B only where A lies, so a small A is cheaper than a large ground).
+    const bool swap = body0->isStaticOrKinematicObject();
+    gatherManifold(manifold, a->second, b->second, swap);
   }
 }
 
-void BulletFriction::Impl::gatherManifold(const btPersistentManifold& manifold, const Attached& a,
-                                          const Attached& b) {
+void BulletFriction::Impl::gatherManifold(const btPersistentManifold& manifold,
+                                          const Attached& body0, const Attached& body1, bool swap) {
   for (int j = 0; j < manifold.getNumContacts(); ++j) {
     // The points Bullet makes rows of (convertContact's test).
     auto& point = const_cast<btManifoldPoint&>(manifold.getContactPoint(j));
     if (point.getDistance() > manifold.getContactProcessingThreshold()) continue;
-    // Body 0 is A, body 1 is B, m_normalWorldOnB points from B toward A (SPEC 1).
+    // m_normalWorldOnB points from body 1 toward body 0: body 0 is A unless swapped (SPEC 1).
     EngineContact c;
-    c.object_a = a.id;
-    c.object_b = b.id;
-    c.shape_a = shapeIndex(a, point.m_index0);
-    c.shape_b = shapeIndex(b, point.m_index1);
+    c.object_a = swap ? body1.id : body0.id;
+    c.object_b = swap ? body0.id : body1.id;
+    c.shape_a = swap ? shapeIndex(body1, point.m_index1) : shapeIndex(body0, point.m_index0);
+    c.shape_b = swap ? shapeIndex(body0, point.m_index0) : shapeIndex(body1, point.m_index1);
     c.point = 0.5 * (fromBt(point.getPositionWorldOnA()) + fromBt(point.getPositionWorldOnB()));
-    c.normal = fromBt(point.m_normalWorldOnB).normalized();
+    c.normal = (swap ? -1.0 : 1.0) * fromBt(point.m_normalWorldOnB).normalized();
     c.depth = std::max(0.0, -static_cast<double>(point.getDistance()));
     contacts.push_back(c);
-    points.push_back(&point);
+    points.push_back({&point, swap});
   }
 }
 
@@ -157,17 +166,19 @@ void BulletFriction::Impl::writeBack() {
   bounds.clear();
   bounds.reserve(points.size());
   for (size_t i = 0; i < points.size(); ++i) {
-    btManifoldPoint& point = *points[i];
+    btManifoldPoint& point = *points[i].point;
     const ContactFrictionResult& r = results[i];
     // The frame Bullet's rows follow (kept: friction direction caching).
     point.m_lateralFrictionDir1 = toBt(r.t);
     point.m_lateralFrictionDir2 = toBt(r.b);
     point.m_contactPointFlags |= BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
-    // Bullet's own coefficient, read by nothing here: the largest bound, for its tools.
+    // Bullet's rows push body 0: when it is B, its friction along +d is A's along -d.
     const BoxLimit& box = r.bounds;
+    bounds[&point] =
+        points[i].swapped ? BoxLimit{box.mu_neg_t, box.mu_neg_b, box.mu_pos_t, box.mu_pos_b} : box;
+    // Bullet's own coefficient, read by nothing here: the largest bound, for its tools.
     point.m_combinedFriction =
         static_cast<btScalar>(std::max({box.mu_pos_t, box.mu_pos_b, box.mu_neg_t, box.mu_neg_b}));
-    bounds[&point] = box;
   }
 }
 

@@ -83,7 +83,8 @@ TEST(BulletFriction, FlatTexturesKeepBulletsSlideDistances) {
   }
 }
 
-TEST(BulletFriction, BodyZeroIsAAndTheNormalPointsFromBTowardA) {
+TEST(BulletFriction, TheDynamicObjectIsAAndTheNormalPointsFromBTowardA) {
+  // Bullet's manifold holds the static ground as body 0 here; the adapter hands it over as B.
   BulletScene scene(
       test::groundScene(test::sawtoothSurface(), test::restingBox("box", Vec3::Constant(0.1))));
   for (int i = 0; i < 5; ++i) scene.step();
@@ -91,9 +92,8 @@ TEST(BulletFriction, BodyZeroIsAAndTheNormalPointsFromBTowardA) {
   ASSERT_EQ(contacts.size(), 4u);
   const ContactFriction& friction = scene.friction()->contactFriction();
   for (const EngineContact& c : contacts) {
-    // The ground lies below the box: n points from B's side toward A's.
-    const double a_above = c.object_a == friction.findObject("box") ? 1.0 : -1.0;
-    EXPECT_GT(a_above * c.normal.z(), 0.99);
+    EXPECT_EQ(c.object_a, friction.findObject("box"));
+    EXPECT_GT(c.normal.z(), 0.99);  // from the ground (B) up toward the box (A)
     EXPECT_GE(c.depth, 0.0);
     EXPECT_NEAR(c.point.z(), 0.0, 1e-3);
   }
