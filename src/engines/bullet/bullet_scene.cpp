@@ -38,6 +38,7 @@ struct BulletBody {
   std::unique_ptr<btRigidBody> body;
 };
 
+// The body's collision shape: Bullet's shape of each of its shapes (owned by `out`).
 btCollisionShape* collisionShape(const Body& body, BulletBody& out) {
   for (const Shape& s : body.shapes)
     out.shapes.push_back(collision_detail::makeBulletShape(s, body.type));
@@ -118,12 +119,12 @@ void BulletScene::Impl::addBodies(const SceneDesc& scene, btScalar body_friction
     BodyDesc desc = scene.bodies[i];
     // A body without shapes (a static anchor) touches nothing.
     if (desc.shapes.empty()) continue;
-    // Surfaces resolved as instantiate() resolves them (paths relative to the scene).
-    for (Shape& s : desc.shapes) {
-      s.surface.normal_map = cache.normalMap(s.surface);
-      s.surface.mask = cache.mask(s.surface.source.mask_file);
-    }
     try {
+      // Surfaces resolved as instantiate() resolves them (paths relative to the scene).
+      for (Shape& s : desc.shapes) {
+        s.surface.normal_map = cache.normalMap(s.surface);
+        s.surface.mask = cache.mask(s.surface.source.mask_file);
+      }
       const Body body = makeBody(desc);
       bodies.push_back(makeBulletBody(body, body_friction));
       btRigidBody* rigid = bodies.back().body.get();
