@@ -95,9 +95,7 @@ btScalar FrictionSolver::solveJointRows(int iteration) {
     btSolverConstraint& row =
         m_tmpSolverNonContactConstraintPool[m_orderNonContactConstraintPool[j]];
     if (iteration >= row.m_overrideNumSolverIterations) continue;
-    const btScalar r = resolveSingleConstraintRowGeneric(
-        m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
-    residual = btMax(residual, r * r);
+    residual = btMax(residual, generic(row));
   }
   return residual;
 }
@@ -118,9 +116,7 @@ btScalar FrictionSolver::solveContactsThenFriction() {
   // Every contact row, then every friction row with its contact's current normal impulse.
   for (int j = 0; j < m_tmpSolverContactConstraintPool.size(); ++j) {
     const btSolverConstraint& row = m_tmpSolverContactConstraintPool[m_orderTmpConstraintPool[j]];
-    const btScalar r = resolveSingleConstraintRowLowerLimit(
-        m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
-    residual = btMax(residual, r * r);
+    residual = btMax(residual, lowerLimit(row));
   }
   for (int j = 0; j < m_tmpSolverContactFrictionConstraintPool.size(); ++j) {
     const int row = m_orderFrictionConstraintPool[j];
@@ -138,9 +134,7 @@ btScalar FrictionSolver::solveInterleaved(const btContactSolverInfo& info) {
   // Each contact row, then its friction rows with the normal impulse it just got.
   for (int c = 0; c < m_tmpSolverContactConstraintPool.size(); ++c) {
     const btSolverConstraint& row = m_tmpSolverContactConstraintPool[m_orderTmpConstraintPool[c]];
-    const btScalar r = resolveSingleConstraintRowLowerLimit(
-        m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
-    residual = btMax(residual, r * r);
+    residual = btMax(residual, lowerLimit(row));
     const btScalar normal_impulse = row.m_appliedImpulse;
     for (int k = 0; k < per_contact; ++k) {
       const int friction = m_orderFrictionConstraintPool[c * per_contact + k];
@@ -157,7 +151,17 @@ btScalar FrictionSolver::solveFrictionRow(int index, btScalar normal_impulse) {
   const RowBounds& bounds = rows_[static_cast<size_t>(index)];
   row.m_lowerLimit = -(bounds.lower * normal_impulse);
   row.m_upperLimit = bounds.upper * normal_impulse;
+  return generic(row);
+}
+
+btScalar FrictionSolver::generic(const btSolverConstraint& row) {
   const btScalar r = resolveSingleConstraintRowGeneric(
+      m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
+  return r * r;
+}
+
+btScalar FrictionSolver::lowerLimit(const btSolverConstraint& row) {
+  const btScalar r = resolveSingleConstraintRowLowerLimit(
       m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
   return r * r;
 }
@@ -172,9 +176,7 @@ btScalar FrictionSolver::solveRollingFriction() {
     const btScalar magnitude = btMin(row.m_friction * total, row.m_friction);
     row.m_lowerLimit = -magnitude;
     row.m_upperLimit = magnitude;
-    const btScalar r = resolveSingleConstraintRowGeneric(
-        m_tmpSolverBodyPool[row.m_solverBodyIdA], m_tmpSolverBodyPool[row.m_solverBodyIdB], row);
-    residual = btMax(residual, r * r);
+    residual = btMax(residual, generic(row));
   }
   return residual;
 }

@@ -49,6 +49,10 @@ class FrictionSolver final : public btSequentialImpulseConstraintSolver {
   btScalar solveInterleaved(const btContactSolverInfo& info);
   btScalar solveFrictionRow(int row, btScalar normal_impulse);
   btScalar solveRollingFriction();
+  // One row through Bullet's row solver (bounded, or with a lower limit only); its squared
+  // residual.
+  btScalar generic(const btSolverConstraint& row);
+  btScalar lowerLimit(const btSolverConstraint& row);
 
   std::function<void()> before_solve_;
   const PointBounds& bounds_;
