@@ -1,8 +1,8 @@
 // The solver that BulletFriction installs: each friction row is bounded by the coefficient of
 // its own sense (SPEC 4, box), in every solver mode Bullet offers, and joints are solved as
-// Bullet solves them. Oracle for friction: a thin slab sliding
-// on the sawtooth loses mu g dt of speed in one step, with mu the bound of the sense its
-// friction acts in (the slab is too flat to tip: its half height is a tenth of its half width).
+// Bullet solves them. Oracle for friction: a thin slab sliding on the sawtooth loses mu g dt of
+// speed in one step, with mu the bound of the sense its friction acts in (the slab is too flat
+// to tip: its half height is a tenth of its half width).
 #include <btBulletDynamicsCommon.h>
 #include <gtest/gtest.h>
 
