@@ -15,34 +15,16 @@
 namespace asperity {
 namespace {
 
-Body cube(const Vec3& position, const Quat& rotation, double half) {
-  Body body;
-  body.type = BodyType::Dynamic;
-  body.pose = {position, rotation};
-  body.inverse_mass = 1.0;
-  Shape box;
-  box.type = ShapeType::Box;
-  box.half_extents = Vec3::Constant(half);
-  body.shapes.push_back(box);
-  return body;
-}
-
-Body ground() {
-  Body body;
-  body.type = BodyType::Static;
-  Shape plane;
-  plane.type = ShapeType::Plane;
-  body.shapes.push_back(plane);
-  return body;
-}
+using collision_test::boxBody;
+using collision_test::groundPlane;
 
 // Three stacks of ten 0.2 m cubes (the paper's stacking scene), each resting 1 mm deep.
 std::vector<Body> threeStacks() {
-  std::vector<Body> bodies = {ground()};
+  std::vector<Body> bodies = {groundPlane()};
   for (int s = 0; s < 3; ++s) {
     for (int level = 0; level < 10; ++level) {
       const Vec3 at(0.5 * s, 0.0, 0.1 - 0.001 + level * 0.199);
-      bodies.push_back(cube(at, Quat(Eigen::AngleAxisd(0.05 * level, Vec3::UnitZ())), 0.1));
+      bodies.push_back(boxBody(Vec3::Constant(0.1), at, 0.05 * level));
     }
   }
   return bodies;
@@ -51,14 +33,14 @@ std::vector<Body> threeStacks() {
 // A pile of 1000 cubes: 10 x 10 columns of 10 resting cubes (1 mm deep), each cube jittered
 // sideways and turned about z, neighbouring columns a few millimetres apart.
 std::vector<Body> pile() {
-  std::vector<Body> bodies = {ground()};
+  std::vector<Body> bodies = {groundPlane()};
   std::mt19937 rng(42);
   std::uniform_real_distribution<double> jitter(-0.005, 0.005), angle(-0.05, 0.05);
   for (int j = 0; j < 10; ++j) {
     for (int i = 0; i < 10; ++i) {
       for (int level = 0; level < 10; ++level) {
         const Vec3 at(0.23 * i + jitter(rng), 0.23 * j + jitter(rng), 0.099 + 0.199 * level);
-        bodies.push_back(cube(at, Quat(Eigen::AngleAxisd(angle(rng), Vec3::UnitZ())), 0.1));
+        bodies.push_back(boxBody(Vec3::Constant(0.1), at, angle(rng)));
       }
     }
   }
@@ -67,23 +49,11 @@ std::vector<Body> pile() {
 
 // The nut leaning on a static cylinder bolt (signed-distance path).
 std::vector<Body> nutOnBolt() {
-  Body bolt;
-  bolt.type = BodyType::Static;
-  Shape rod;
-  rod.type = ShapeType::Cylinder;
-  rod.radius = 0.0018;
-  rod.half_height = 0.01;
-  bolt.shapes.push_back(rod);
-  Body nut;
-  nut.type = BodyType::Dynamic;
-  nut.inverse_mass = 1.0;
-  nut.pose.position = Vec3(0.00025, 0, 0.002);
-  Shape mesh;
-  mesh.type = ShapeType::TriangleMesh;
   // A closed square nut, 7 mm across, 4 mm bore, 3.2 mm high.
-  mesh.mesh = collision_test::squareNutMesh(0.0035, 0.002, 0.0016);
-  nut.shapes.push_back(mesh);
-  return {bolt, nut};
+  const auto nut = collision_test::squareNutMesh(0.0035, 0.002, 0.0016);
+  return {
+      collision_test::cylinderBody(0.0018, 0.01, Vec3::Zero(), Quat::Identity(), BodyType::Static),
+      collision_test::meshBody(nut, BodyType::Dynamic, Vec3(0.00025, 0, 0.002))};
 }
 
 // The Stanford bunny (glmark2-data, scaled to 0.2 m, simplified to 2000 triangles, closed)
@@ -92,22 +62,8 @@ std::vector<Body> bunnyOnBox() {
   auto bunny = simplifyMesh(*loadObjMesh("/usr/share/glmark2/models/bunny.obj", 0.1), 2000);
   double lowest = 1e300;
   for (const Vec3& v : bunny->vertices) lowest = std::min(lowest, v.z());
-  Body table;
-  table.type = BodyType::Static;
-  table.pose.position = Vec3(0, 0, -0.1);
-  Shape slab;
-  slab.type = ShapeType::Box;
-  slab.half_extents = Vec3(1, 1, 0.1);
-  table.shapes.push_back(slab);
-  Body body;
-  body.type = BodyType::Dynamic;
-  body.inverse_mass = 1.0;
-  body.pose.position = Vec3(0, 0, -lowest - 0.001);
-  Shape mesh;
-  mesh.type = ShapeType::TriangleMesh;
-  mesh.mesh = bunny;
-  body.shapes.push_back(mesh);
-  return {table, body};
+  return {boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0, BodyType::Static),
+          collision_test::meshBody(bunny, BodyType::Dynamic, Vec3(0, 0, -lowest - 0.001))};
 }
 
 void runDetect(benchmark::State& state, const std::vector<Body>& bodies) {

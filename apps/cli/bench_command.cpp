@@ -164,7 +164,8 @@ void registerBenchCommand(CLI::App& app) {
   sub->add_option("SCENES", opt->scenes, "Scene files (default: every experiment in --scenes)");
   sub->add_option("--scenes", opt->scenes_dir, "Folder of the experiment scenes")
       ->capture_default_str();
-  sub->add_option("--sampler", opt->sampler, "Friction sampler override (constant, cone, cpu...)");
+  sub->add_option("--sampler", opt->sampler,
+                  "Friction provider replacing each scene's (constant, cone, cpu, ...)");
   sub->add_option("--json", opt->json, "Also write the table as JSON to this file");
   sub->add_option("--threads", opt->threads,
                   "Also run each scene on N threads (0 = every core): per-stage times at 1 and N "

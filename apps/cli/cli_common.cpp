@@ -7,8 +7,9 @@
 #include <sstream>
 
 #include "asperity/error.hpp"
+#include "asperity/world/world.hpp"
 #ifdef ASPERITY_HAVE_GL
-#include "asperity/sampler/gl_patch_sampler.hpp"
+#include "asperity/scene/gl_sampler_provider.hpp"
 #endif
 
 namespace asperity::cli {
@@ -31,6 +32,15 @@ void printError(const std::string& message) {
     if (c == '\n' || c == '\r') c = ' ';
   while (!line.empty() && line.back() == ' ') line.pop_back();
   std::cerr << "asperity: error: " << line << '\n';
+}
+
+void printWarning(const std::string& warning) {
+  // One write, so that lines of two threads do not interleave.
+  std::cerr << ("asperity: warning: " + warning + "\n");
+}
+
+void printWarnings(World& world) {
+  world.diagnostics().setSink(printWarning);
 }
 
 namespace {

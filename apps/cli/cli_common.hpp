@@ -12,6 +12,10 @@
 
 #include "asperity/scene/friction_providers.hpp"
 
+namespace asperity {
+class World;
+}
+
 namespace asperity::cli {
 
 // Subcommands (apps/cli/<name>_command.cpp).
@@ -53,5 +57,9 @@ void checkSampler(const FrictionProviders& providers, const std::string& name,
 
 // Prints `asperity: error: <message>` as one line on stderr (newlines become spaces).
 void printError(const std::string& message);
+// Prints `asperity: warning: <warning>` as one line on stderr.
+void printWarning(const std::string& warning);
+// Prints the world's warnings (World::diagnostics) now and each later one as it comes.
+void printWarnings(World& world);
 
 }  // namespace asperity::cli

@@ -67,15 +67,25 @@ void printTable(std::ostream& os, const ConeOptions& opt, const DirectionalMu& m
   os << line;
 }
 
+// A normal map read for the cone; texels that are not normals are warned about (SPEC 10).
+NormalMap loadConeMap(const std::string& path, GreenConvention green) {
+  NormalMapStats stats;
+  NormalMap map = loadNormalMapPng(path, green, &stats);
+  Diagnostics diagnostics;
+  diagnostics.setSink(printWarning);
+  warnInvalidTexels(path, stats, diagnostics);
+  return map;
+}
+
 // The subcommand's action: load, compute (flatPatchCone), print, plot.
 void runCone(const ConeOptions& opt) {
   const GreenConvention green = opt.directx ? GreenConvention::DirectX : GreenConvention::OpenGL;
   // Decode A on a second thread while B decodes here: PNG decoding dominates the run time.
   std::future<NormalMap> a_loading;
   if (!opt.a_path.empty())
-    a_loading = std::async(std::launch::async,
-                           [&opt, green]() { return loadNormalMapPng(opt.a_path, green); });
-  const NormalMap b = loadNormalMapPng(opt.b_path, green);
+    a_loading =
+        std::async(std::launch::async, [&opt, green]() { return loadConeMap(opt.a_path, green); });
+  const NormalMap b = loadConeMap(opt.b_path, green);
   std::optional<NormalMap> a;
   if (a_loading.valid()) a = a_loading.get();
 

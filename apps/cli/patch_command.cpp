@@ -52,54 +52,66 @@ void label(cairo_t* cr, double x, double y, const std::string& text) {
   cairo_show_text(cr, text.c_str());
 }
 
-// Both surfaces' blocks (normals, then channels), and the coefficients as text on the right.
-void drawFigure(const PatchImages& im, const Contact& c, float mu_max, const std::string& out) {
-  const int r = im.resolution, n = im.directions;
-  const int cell = std::max(3, 160 / r), side = r * cell;
-  const int columns = std::min(kColumns, n + 1);
-  const int rows_per_surface = (n + 1 + columns - 1) / columns;
-  const int width = 2 * kMargin + columns * (side + kMargin) + kText;
-  const int height = kMargin + 2 * rows_per_surface * (side + kLabel + kMargin);
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
-  cairo_t* cr = cairo_create(surface);
-  cairo_set_source_rgb(cr, 0.12, 0.12, 0.14);
-  cairo_paint(cr);
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  cairo_set_font_size(cr, 12);
+// Where the figure's panels go: per surface, panel 0 (normals) then one per channel, in rows
+// of `columns`; the coefficients' text on the right.
+struct FigureLayout {
+  int r = 0, n = 0;  // patch resolution, directions
+  int cell = 0, side = 0, columns = 0, rows_per_surface = 0, width = 0, height = 0;
+
+  FigureLayout(int resolution, int directions) : r(resolution), n(directions) {
+    cell = std::max(3, 160 / r), side = r * cell;
+    columns = std::min(kColumns, n + 1);
+    rows_per_surface = (n + 1 + columns - 1) / columns;
+    width = 2 * kMargin + columns * (side + kMargin) + kText;
+    height = kMargin + 2 * rows_per_surface * (side + kLabel + kMargin);
+  }
+};
+
+// The colour of pixel p of surface s in a panel: 0 the normals, k + 1 channel k scaled by
+// mu_max (Sec. 4.2 packing); red where not covered, dimmer outside P.
+void panelColour(const PatchImages& im, int s, int panel, float mu_max, int p, double* rgb) {
   const double uncovered[3] = {0.25, 0.05, 0.05};
+  const auto pi = static_cast<size_t>(p);
+  if (!im.covered[static_cast<size_t>(s)][pi]) {
+    std::copy(uncovered, uncovered + 3, rgb);
+    return;
+  }
+  const double dim = im.in_patch[pi] ? 1.0 : 0.5;  // outside P shown dimmer
+  if (panel == 0) {
+    const Vec3f& m = im.normals[static_cast<size_t>(s)][pi];
+    for (int k = 0; k < 3; ++k) rgb[k] = dim * (0.5 + 0.5 * static_cast<double>(m[k]));
+    return;
+  }
+  const auto n = static_cast<size_t>(im.directions);
+  const float mu = im.mu[static_cast<size_t>(s)][pi * n + static_cast<size_t>(panel - 1)];
+  const double g = dim * std::clamp(static_cast<double>(mu / mu_max), 0.0, 1.0);
+  rgb[0] = rgb[1] = rgb[2] = g;
+}
+
+// Both surfaces' blocks: normals, then the channels, each labelled.
+void drawPanels(cairo_t* cr, const PatchImages& im, const FigureLayout& f, float mu_max) {
   for (int s = 0; s < 2; ++s) {
     const char* name = s == 0 ? "A" : "B";
-    for (int panel = 0; panel <= n; ++panel) {
-      const int row = s * rows_per_surface + panel / columns;
-      const int x = kMargin + (panel % columns) * (side + kMargin);
-      const int y = kMargin + row * (side + kLabel + kMargin) + kLabel;
-      // Panel 0: normals; panel k + 1: channel k scaled by mu_max (Sec. 4.2 packing).
+    for (int panel = 0; panel <= f.n; ++panel) {
+      const int row = s * f.rows_per_surface + panel / f.columns;
+      const int x = kMargin + (panel % f.columns) * (f.side + kMargin);
+      const int y = kMargin + row * (f.side + kLabel + kMargin) + kLabel;
       label(cr, x, y - 5,
             panel == 0 ? std::string("normals ") + name
                        : "mu " + std::string(name) + " d" + std::to_string(panel - 1));
-      drawImage(cr, x, y, r, cell, [&](int p, double* rgb) {
-        const auto pi = static_cast<size_t>(p);
-        if (!im.covered[static_cast<size_t>(s)][pi])
-          return std::copy(uncovered, uncovered + 3, rgb), void();
-        const double dim = im.in_patch[pi] ? 1.0 : 0.5;  // outside P shown dimmer
-        if (panel == 0) {
-          const Vec3f& m = im.normals[static_cast<size_t>(s)][pi];
-          for (int k = 0; k < 3; ++k) rgb[k] = dim * (0.5 + 0.5 * static_cast<double>(m[k]));
-          return;
-        }
-        const float mu = im.mu[static_cast<size_t>(s)]
-                              [pi * static_cast<size_t>(n) + static_cast<size_t>(panel - 1)];
-        const double g = dim * std::clamp(static_cast<double>(mu / mu_max), 0.0, 1.0);
-        rgb[0] = rgb[1] = rgb[2] = g;
-      });
+      drawImage(cr, x, y, f.r, f.cell,
+                [&](int p, double* rgb) { panelColour(im, s, panel, mu_max, p, rgb); });
     }
   }
-  // The coefficients of Eq. 7.
-  const int tx = width - kText + kMargin;
+}
+
+// The coefficients of Eq. 7 and a legend, as text on the right.
+void drawCoefficients(cairo_t* cr, const Contact& c, const FigureLayout& f, float mu_max) {
+  const int tx = f.width - kText + kMargin;
   int ty = kMargin + kLabel;
   label(cr, tx, ty,
         "|P| = " + std::to_string(c.covered_pixels) + (c.fallback ? " (fallback)" : ""));
-  for (int k = 0; k < n; ++k) {
+  for (int k = 0; k < f.n; ++k) {
     char line[64];
     std::snprintf(line, sizeof line, "mu_d%d = %.4f", k, static_cast<double>(c.mu.mu[k]));
     label(cr, tx, ty += 16, line);
@@ -107,6 +119,20 @@ void drawFigure(const PatchImages& im, const Contact& c, float mu_max, const std
   label(cr, tx, ty += 24,
         "grey: mu / mu_max (mu_max = " + std::to_string(mu_max).substr(0, 4) + ")");
   label(cr, tx, ty += 16, "red: not covered; dim: outside P");
+}
+
+// Both surfaces' blocks (normals, then channels), and the coefficients as text on the right.
+void drawFigure(const PatchImages& im, const Contact& c, float mu_max, const std::string& out) {
+  const FigureLayout layout(im.resolution, im.directions);
+  cairo_surface_t* surface =
+      cairo_image_surface_create(CAIRO_FORMAT_RGB24, layout.width, layout.height);
+  cairo_t* cr = cairo_create(surface);
+  cairo_set_source_rgb(cr, 0.12, 0.12, 0.14);
+  cairo_paint(cr);
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, 12);
+  drawPanels(cr, im, layout, mu_max);
+  drawCoefficients(cr, c, layout, mu_max);
   cairo_destroy(cr);
   const cairo_status_t status = cairo_surface_write_to_png(surface, out.c_str());
   cairo_surface_destroy(surface);
@@ -120,6 +146,7 @@ void runPatch(const PatchOptions& opt) {
   // The scene after K steps, and contact I of that step.
   const SceneDesc scene = loadScene(opt.scene);
   std::unique_ptr<World> world = instantiate(scene, {frictionProviders()});
+  printWarnings(*world);
   for (int k = 0; k < opt.step; ++k) world->step();
   const std::vector<Contact>& contacts = world->contacts();
   if (opt.contact >= static_cast<int>(contacts.size())) {

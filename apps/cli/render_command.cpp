@@ -93,76 +93,100 @@ void showProgress(int done, int total) {
   std::fflush(stderr);
 }
 
-// The scene's own "camera", with clip planes that follow its distance like --camera's.
 // Steps until the world's time reaches t (to the nearest step).
 void advanceTo(World& world, double t) {
   const double dt = world.settings().dt;
   while (world.time() + 0.5 * dt < t) world.step();
 }
 
-void runRender(const RenderCommandOptions& o) {
-  // Validate everything before loading or rendering anything.
+// The options checked and parsed, before anything is loaded or rendered.
+struct RenderPlan {
   int width = 0, height = 0;
-  parseSize(o.size, width, height);
+  OutputKind kind = OutputKind::Video;
+  render::WorldViewOptions view;
+  render::Camera user_camera;  // --camera when given
+};
+
+RenderPlan planRender(const RenderCommandOptions& o) {
+  RenderPlan plan;
+  parseSize(o.size, plan.width, plan.height);
   if (!std::isfinite(o.fps) || o.fps <= 0.0 || o.fps > 1000.0)
     throw Error("render: --fps must be in (0, 1000]");
   if (!std::isfinite(o.seconds) || o.seconds < 0.0) throw Error("render: --seconds must be >= 0");
-  render::WorldViewOptions view_options;
-  view_options.debug.layers = parseDebugLayers(o.layers);
+  plan.view.debug.layers = parseDebugLayers(o.layers);
   // The camera is checked now and placed once the world exists.
-  render::Camera user_camera;
-  if (!o.camera.empty()) user_camera = render::parseCamera(o.camera, "render: --camera");
+  if (!o.camera.empty()) plan.user_camera = render::parseCamera(o.camera, "render: --camera");
   if (o.out.empty()) throw Error("render: --out FILE.mp4, DIR/ or FILE.png is required");
-  const OutputKind kind = prepareOutput(o);
-  if (kind == OutputKind::Video && render::findExecutable("ffmpeg").empty())
+  plan.kind = prepareOutput(o);
+  if (plan.kind == OutputKind::Video && render::findExecutable("ffmpeg").empty())
     throw Error("render: " + o.out +
                 ": ffmpeg is not on PATH (install Debian's ffmpeg package, or write PNG frames: "
                 "--out DIR/)");
+  return plan;
+}
 
-  // The world, with the chosen friction sampler ("gl" included).
+// The world, with the chosen friction sampler ("gl" included).
+std::unique_ptr<World> makeWorld(const RenderCommandOptions& o, SceneDesc& scene) {
   const FrictionProviders providers = frictionProviders();
-  SceneDesc scene = loadScene(o.scene);
+  scene = loadScene(o.scene);
   if (!o.sampler.empty()) {
     checkSampler(providers, o.sampler);  // names the known ones
-    scene.sampler = o.sampler;
+    scene.friction_provider = o.sampler;
   }
   std::unique_ptr<World> world = instantiate(scene, {providers});
+  printWarnings(*world);
+  return world;
+}
 
-  // Headless context and renderer.
-  gl::GlContext context;
-  render::RendererOptions ro;
-  ro.width = width;
-  ro.height = height;
-  ro.samples = o.samples;
-  render::Renderer renderer(ro);
-  render::WorldView view;
-  // --camera, else the scene's camera, else one framing the bodies.
-  const render::Camera cam =
-      !o.camera.empty() ? user_camera
-      : scene.camera ? render::lookAt(scene.camera->eye, scene.camera->target, scene.camera->fov_y)
-                     : view.defaultCamera(*world, double(width) / height);
-  render::RenderScene frame_scene;
-  auto renderAt = [&](double t) {
-    advanceTo(*world, t);
-    context.makeCurrent();  // the "gl" sampler may have made its own context current
-    view.update(*world, view_options, frame_scene);
-    renderer.render(frame_scene, cam);
-    return renderer.readPixels();
-  };
-
-  // One PNG at --frame-at.
-  if (kind == OutputKind::Png) {
-    render::savePng(renderAt(o.frame_at), o.out);
-    return;
+// A headless context and renderer that step the world to a time and render it from one
+// camera: --camera, else the scene's camera, else one framing the bodies.
+class FrameRenderer {
+ public:
+  FrameRenderer(World& world, const SceneDesc& scene, const RenderPlan& plan,
+                const RenderCommandOptions& o)
+      : world_(world), renderer_(rendererOptions(plan, o)), view_options_(plan.view) {
+    camera_ = !o.camera.empty() ? plan.user_camera
+              : scene.camera
+                  ? render::lookAt(scene.camera->eye, scene.camera->target, scene.camera->fov_y)
+                  : view_.defaultCamera(world, double(plan.width) / plan.height);
   }
-  // A frame every 1/fps seconds, t = 0 included.
-  const int frames = static_cast<int>(std::floor(o.seconds * o.fps + 1e-9)) + 1;
+
+  render::Image at(double t) {
+    advanceTo(world_, t);
+    context_.makeCurrent();  // the "gl" sampler may have made its own context current
+    view_.update(world_, view_options_, frame_scene_);
+    renderer_.render(frame_scene_, camera_);
+    return renderer_.readPixels();
+  }
+
+ private:
+  static render::RendererOptions rendererOptions(const RenderPlan& plan,
+                                                 const RenderCommandOptions& o) {
+    render::RendererOptions ro;
+    ro.width = plan.width;
+    ro.height = plan.height;
+    ro.samples = o.samples;
+    return ro;
+  }
+
+  World& world_;
+  gl::GlContext context_;  // made before the renderer, which needs it current
+  render::Renderer renderer_;
+  render::WorldView view_;
+  render::WorldViewOptions view_options_;
+  render::Camera camera_;
+  render::RenderScene frame_scene_;
+};
+
+// A frame every 1/fps seconds, t = 0 included, into the video or the folder of PNGs.
+void renderFrames(const RenderCommandOptions& o, const RenderPlan& plan, FrameRenderer& frames) {
+  const int count = static_cast<int>(std::floor(o.seconds * o.fps + 1e-9)) + 1;
   const bool tty = isatty(STDERR_FILENO) != 0;
   std::unique_ptr<render::VideoWriter> video;
-  if (kind == OutputKind::Video)
-    video = std::make_unique<render::VideoWriter>(o.out, width, height, o.fps);
-  for (int i = 0; i < frames; ++i) {
-    const render::Image image = renderAt(i / o.fps);
+  if (plan.kind == OutputKind::Video)
+    video = std::make_unique<render::VideoWriter>(o.out, plan.width, plan.height, o.fps);
+  for (int i = 0; i < count; ++i) {
+    const render::Image image = frames.at(i / o.fps);
     if (video) {
       video->write(image);
     } else {
@@ -170,9 +194,23 @@ void runRender(const RenderCommandOptions& o) {
       std::snprintf(name, sizeof name, "frame_%05d.png", i);
       render::savePng(image, (fs::path(o.out) / name).string());
     }
-    if (tty) showProgress(i + 1, frames);
+    if (tty) showProgress(i + 1, count);
   }
   if (video) video->finish();
+}
+
+void runRender(const RenderCommandOptions& o) {
+  // Validate everything before loading or rendering anything.
+  const RenderPlan plan = planRender(o);
+  SceneDesc scene;
+  std::unique_ptr<World> world = makeWorld(o, scene);
+  FrameRenderer frames(*world, scene, plan, o);
+  // One PNG at --frame-at, else the whole run.
+  if (plan.kind == OutputKind::Png) {
+    render::savePng(frames.at(o.frame_at), o.out);
+    return;
+  }
+  renderFrames(o, plan, frames);
 }
 
 }  // namespace
@@ -193,7 +231,8 @@ void registerRenderCommand(CLI::App& app) {
   sub->add_option("--layers", opt->layers,
                   "Debug layers: contacts,frames,cones,patches (or all, none)")
       ->capture_default_str();
-  sub->add_option("--sampler", opt->sampler, "Friction sampler replacing the scene's");
+  sub->add_option("--sampler", opt->sampler,
+                  "Friction provider replacing the scene's friction_provider");
   sub->add_option("--samples", opt->samples, "MSAA samples per pixel")
       ->check(CLI::Range(1, 16))
       ->capture_default_str();

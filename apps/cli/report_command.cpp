@@ -240,7 +240,8 @@ void registerReportCommand(CLI::App& app) {
   sub->add_option("--out", opt->out, "Output folder (the page goes to DIR/report/)")->required();
   sub->add_option("--scenes", opt->scenes_dir, "Folder of the experiment scenes")
       ->capture_default_str();
-  sub->add_option("--sampler", opt->sampler, "Friction sampler override (constant, cone, cpu...)");
+  sub->add_option("--sampler", opt->sampler,
+                  "Friction provider replacing each scene's (constant, cone, cpu, ...)");
   sub->add_option("--threads", opt->threads,
                   "Worker threads of each step (0 = every core); the outcomes do not change")
       ->check(CLI::Range(0, kMaxThreads));

@@ -95,7 +95,7 @@ nlohmann::ordered_json statsJson(const RunOptions& opt, const SceneDesc& scene, 
   j["simulated_time"] = world.time();
   j["wall_time_s"] = wall_s;
   j["bodies"] = world.bodies().size();
-  j["sampler"] = scene.sampler;
+  j["sampler"] = scene.friction_provider;
   j["threads"] = world.settings().threads;
   // The collision set-up before the first step (World::prepare), once.
   j["prepare_ms"] = sums.prepare_ms;
@@ -152,7 +152,7 @@ SceneDesc loadWithOverrides(const RunOptions& opt, const FrictionProviders& prov
     scene.settings.frame_mode = parseName<FrameMode>(opt.frame, kFrameModeNames, "--frame");
   if (!opt.sampler.empty()) {
     checkSampler(providers, opt.sampler);
-    scene.sampler = opt.sampler;
+    scene.friction_provider = opt.sampler;
   }
   FrictionSettings& friction = scene.settings.friction;
   if (opt.directions) friction.directions = *opt.directions;
@@ -180,6 +180,7 @@ void runScene(const RunOptions& opt) {
   const FrictionProviders providers = frictionProviders();
   const SceneDesc scene = loadWithOverrides(opt, providers);
   std::unique_ptr<World> world = instantiate(scene, {providers});
+  printWarnings(*world);
   // Parameters that cannot be simulated stably are named before the run (it may still work).
   for (const std::string& warning : stabilityWarnings(*world))
     std::fprintf(stderr, "asperity: warning: %s: %s\n", opt.scene.c_str(), warning.c_str());
@@ -238,7 +239,9 @@ void registerRunCommand(CLI::App& app) {
       ->check(CLI::IsMember(namesOf<LimitSurfaceKind>(kLimitSurfaceNames)));
   sub->add_option("--frame", opt->frame, "Contact frame: world, body, auto or texture")
       ->check(CLI::IsMember(namesOf<FrameMode>(kFrameModeNames)));
-  sub->add_option("--sampler", opt->sampler, "Friction sampler (constant, cone, cpu, ...)");
+  sub->add_option(
+      "--sampler", opt->sampler,
+      "Friction provider replacing the scene's friction_provider (constant, cone, cpu, ...)");
   sub->add_option("--directions", opt->directions, "Sample directions N (SPEC 1)")
       ->check(CLI::Range(kMinDirections, kMaxDirections));
   sub->add_option("--patch-width", opt->patch_width, "Patch width w (m, SPEC 3)")

@@ -3,7 +3,9 @@
 
 #include <fstream>
 #include <memory>
-#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <utility>
 
 #include "asperity/error.hpp"
 #include "asperity/scene/scene.hpp"
@@ -24,25 +26,51 @@ struct SweepOptions {
   std::string out;
 };
 
-void runSweep(const SweepOptions& opt) {
-  // The scene must load as it is (the loader's message names the culprit) before varying it.
-  loadScene(opt.scene);
+// This command's option for each field of a sweep's description.
+constexpr std::pair<SweepField, const char*> kFlags[] = {{SweepField::Vary, "--vary"},
+                                                         {SweepField::Measures, "--measure"},
+                                                         {SweepField::Samples, "--samples"},
+                                                         {SweepField::Seconds, "--seconds"},
+                                                         {SweepField::Threads, "--threads"}};
+
+std::string flagOf(SweepField field) {
+  for (const auto& [f, flag] : kFlags)
+    if (f == field) return flag;
+  return "sweep";
+}
+
+// The sweep the options describe, checked (paths, measures, the scene).
+Sweep planSweep(const SweepOptions& opt) {
+  // The scene must load as it is (the loader's message names the culprit) before varying it;
+  // its warnings are printed once, not once per sample.
+  for (const std::string& warning : loadScene(opt.scene).warnings) printWarning(warning);
   std::ifstream in(opt.scene);
+  std::ostringstream text;
+  text << in.rdbuf();
   SweepDesc desc;
-  desc.scene = nlohmann::json::parse(in);
+  desc.scene_json = text.str();
   desc.scene_file = opt.scene;
   for (const std::string& v : opt.vary) desc.vary.push_back(parseVariation(v));
   desc.samples = opt.samples;
   desc.seed = opt.seed;
   desc.seconds = opt.seconds;
   desc.measures = opt.measures;
-  const Sweep sweep(std::move(desc));
-  // Prove the output can be written before the runs.
-  std::ofstream out(opt.out, std::ios::binary);
-  if (!out) throw Error("--out: cannot open \"" + opt.out + "\" for writing");
-  const std::vector<SampleResult> results = sweep.runAll(opt.threads);
-  out << sweep.csv(results);
-  if (!out) throw Error("--out: write to \"" + opt.out + "\" failed");
+  return Sweep(std::move(desc));
+}
+
+void runSweep(const SweepOptions& opt) {
+  try {
+    const Sweep sweep = planSweep(opt);
+    // Prove the output can be written before the runs.
+    std::ofstream out(opt.out, std::ios::binary);
+    if (!out) throw Error("--out: cannot open \"" + opt.out + "\" for writing");
+    const std::vector<SampleResult> results = sweep.runAll(opt.threads);
+    out << sweep.csv(results);
+    if (!out) throw Error("--out: write to \"" + opt.out + "\" failed");
+  } catch (const SweepError& e) {
+    // The library names the description's fields; the user wrote this command's options.
+    throw Error(e.messageNaming(flagOf(e.field())));
+  }
 }
 
 }  // namespace

@@ -99,10 +99,10 @@ void Viewer::beginDrag(double x, double y) {
   spring.target = hit->point;
   spring.stiffness = spring_stiffness_ * mass;
   spring.damping = 2.0 * 0.5 * std::sqrt(spring.stiffness * mass);
-  if (spring_ < 0) {
+  if (spring_ == kNoSpring) {
     spring_ = world_->addSpring(spring);
   } else {
-    world_->springs()[static_cast<size_t>(spring_)] = spring;
+    world_->springs()[spring_] = spring;
   }
   dragged_ = hit->body;
   drag_plane_point_ = hit->point;
@@ -117,18 +117,18 @@ void Viewer::updateDrag(double x, double y) {
   camera_.ray(x, y, w, h, origin, direction);
   const Vec3 normal = (camera_.eye - camera_.target).normalized();
   const double denominator = direction.dot(normal);
-  if (std::abs(denominator) < 1e-9 || spring_ < 0) return;
+  if (std::abs(denominator) < 1e-9 || spring_ == kNoSpring) return;
   const double s = (drag_plane_point_ - origin).dot(normal) / denominator;
   if (s <= 0.0) return;
-  SpringDesc& spring = world_->springs()[static_cast<size_t>(spring_)];
+  SpringDesc& spring = world_->springs()[spring_];
   spring.target = origin + s * direction;
   spring.target_velocity = Vec3::Zero();
 }
 
 void Viewer::endDrag() {
   // Springs cannot be removed: the idle one has no stiffness.
-  if (drag_ == Drag::Body && spring_ >= 0) {
-    SpringDesc& spring = world_->springs()[static_cast<size_t>(spring_)];
+  if (drag_ == Drag::Body && spring_ != kNoSpring) {
+    SpringDesc& spring = world_->springs()[spring_];
     spring.stiffness = 0.0;
     spring.damping = 0.0;
   }

@@ -9,7 +9,8 @@ int main(int argc, char** argv) {
   asperity::viewer::ViewerOptions options;
   CLI::App app{"Asperity viewer: simulate a scene interactively.", "asperity-viewer"};
   app.add_option("scene", options.scene, "Scene file (JSON)")->required();
-  app.add_option("--sampler", options.sampler, "Friction sampler replacing the scene's");
+  app.add_option("--sampler", options.sampler,
+                 "Friction provider replacing the scene's friction_provider");
   app.add_option("--threads", options.threads, "Worker threads of a step (0 = every core)")
       ->check(CLI::Range(0, asperity::kMaxThreads));
   app.add_option("--width", options.width, "Window width")->check(CLI::Range(64, 8192));

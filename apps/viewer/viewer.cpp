@@ -14,6 +14,7 @@
 #include "asperity/error.hpp"
 #include "asperity/gl/context.hpp"
 #include "asperity/sampler/gl_patch_sampler.hpp"
+#include "asperity/scene/gl_sampler_provider.hpp"
 
 namespace asperity::viewer {
 namespace {
@@ -92,13 +93,16 @@ void Viewer::loadScene(const std::string& path) {
   // Keep the current scene when the new one fails; say why.
   try {
     SceneDesc scene = asperity::loadScene(path);
-    if (!options_.sampler.empty()) scene.sampler = options_.sampler;
+    if (!options_.sampler.empty()) scene.friction_provider = options_.sampler;
     if (options_.threads >= 0) scene.settings.threads = options_.threads;
     std::unique_ptr<World> world = instantiate(scene, {providers_});
     scene_ = std::move(scene);
     world_ = std::move(world);
     scene_path_ = open_path_ = path;
+    // The scene's warnings (deprecated keys, maps that are not all normals) shown in the panel.
     message_.clear();
+    for (const std::string& warning : world_->diagnostics().warnings())
+      message_ += (message_.empty() ? "warning: " : "\nwarning: ") + warning;
   } catch (const Error& e) {
     message_ = e.what();
     return;
@@ -111,7 +115,7 @@ void Viewer::loadScene(const std::string& path) {
   camera_ = scene_camera
                 ? render::lookAt(scene_camera->eye, scene_camera->target, scene_camera->fov_y)
                 : view_.defaultCamera(*world_, h > 0 ? double(w) / h : 16.0 / 9.0);
-  spring_ = -1;
+  spring_ = kNoSpring;
   dragged_ = kNoBody;
   accumulator_ = 0.0;
   glfwSetWindowTitle(window_, ("asperity-viewer: " + path).c_str());
@@ -125,7 +129,7 @@ void Viewer::reset() {
   world_->settings() = settings;
   if (providers_.has(sampler)) world_->setFrictionProvider(providers_.make(sampler));
   view_ = render::WorldView();
-  spring_ = -1;
+  spring_ = kNoSpring;
   dragged_ = kNoBody;
   drag_ = Drag::None;
   accumulator_ = 0.0;

@@ -91,7 +91,7 @@ class Viewer {
   // Mouse: orbit / pan / drag state.
   enum class Drag { None, Orbit, Pan, Body } drag_ = Drag::None;
   double last_x_ = 0.0, last_y_ = 0.0;
-  int spring_ = -1;  // the world's mouse spring (reused; stiffness 0 when idle)
+  SpringId spring_ = kNoSpring;  // the world's mouse spring (reused; stiffness 0 when idle)
   BodyId dragged_ = kNoBody;
   Vec3 drag_plane_point_ = Vec3::Zero();
   double spring_stiffness_ = 60.0;  // per kg of the dragged body (N/m/kg)

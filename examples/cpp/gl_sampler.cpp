@@ -16,6 +16,8 @@ int main() {
     asperity::BodyDesc ground = asperity::groundPlaneDesc();
     ground.shapes[0].surface.source.generator = {"stone", {}, 256, 3};
     ground.shapes[0].surface.gain = 2.0;
+    // The world reads no files and runs no generators: surfaces are resolved first.
+    asperity::resolveSurfaces(ground.shapes, world.diagnostics());
     world.createBody(ground);
     asperity::Transform pose;
     pose.position = asperity::Vec3(0.0, 0.0, 0.099);

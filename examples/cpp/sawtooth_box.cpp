@@ -29,7 +29,10 @@ asperity::BodyDesc sawtoothSlab() {
 double slideDistance(double speed) {
   asperity::World world;
   world.setFrictionProvider(std::make_unique<asperity::CpuPatchSampler>());
-  world.createBody(sawtoothSlab());
+  // The world reads no files and runs no generators: surfaces are resolved first.
+  asperity::BodyDesc slab = sawtoothSlab();
+  asperity::resolveSurfaces(slab.shapes, world.diagnostics());
+  world.createBody(slab);
   asperity::Transform start;
   start.position = asperity::Vec3(0.0, 0.0, 0.1);
   asperity::BodyDesc box = asperity::boxDesc("box", asperity::Vec3(0.1, 0.1, 0.1), start);

@@ -14,6 +14,10 @@ int main(int argc, char** argv) {
   try {
     const asperity::SceneDesc scene = asperity::loadScene(argv[1]);
     const std::unique_ptr<asperity::World> world = asperity::instantiate(scene);
+    // The library prints nothing: its warnings (deprecated keys, ...) are the world's to show.
+    world->diagnostics().setSink([](const std::string& w) {
+      std::fprintf(stderr, "scene_contacts: warning: %s\n", w.c_str());
+    });
     const int steps = argc > 2 ? std::stoi(argv[2]) : 100;
     for (int i = 0; i < steps; ++i) world->step();
     std::printf("t = %.3f s, %zu contacts, sampler %s\n", world->time(), world->contacts().size(),

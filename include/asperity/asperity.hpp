@@ -1,9 +1,11 @@
 // Everything a program needs to build worlds, load scenes and read friction from textures:
 // one include for the core library (target asperity::asperity). The OpenGL patch sampler
-// (asperity/sampler/gl_patch_sampler.hpp, target asperity::gl) and the renderer
+// (asperity/sampler/gl_patch_sampler.hpp, target asperity::gl;
+// asperity/scene/gl_sampler_provider.hpp offers it to scenes as "gl") and the renderer
 // (asperity/render/*.hpp, target asperity::render) have their own headers and targets.
 #pragma once
 
+#include "asperity/diagnostics.hpp"
 #include "asperity/error.hpp"
 #include "asperity/math/types.hpp"
 

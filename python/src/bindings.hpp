@@ -41,4 +41,8 @@ py::object fromJson(const nlohmann::json& json);
 // A scene from a path, a dict or a loaded Scene. Throws FileNotFoundError for a missing file.
 PyScene sceneFrom(const py::handle& scene);
 
+// Issues a library warning (Diagnostics) as warnings.warn(message, UserWarning); raises when a
+// warnings filter turns it into an error.
+void warn(const std::string& message);
+
 }  // namespace asperity::python

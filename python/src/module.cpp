@@ -22,6 +22,12 @@ py::object fromJson(const nlohmann::json& json) {
   return py::module_::import("json").attr("loads")(json.dump());
 }
 
+void warn(const std::string& message) {
+  // Called from a world's diagnostics sink too, which may run with the GIL released.
+  const py::gil_scoped_acquire gil;
+  if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 1) != 0) throw py::error_already_set();
+}
+
 void throwFileNotFound(const std::string& message) {
   PyErr_SetString(PyExc_FileNotFoundError, message.c_str());
   throw py::error_already_set();

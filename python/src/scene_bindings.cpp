@@ -63,8 +63,11 @@ void bindScene(py::module_& m) {
           "source_file", [](const PyScene& s) { return s.desc.source_file; },
           "The file the scene came from ('' for a dict).")
       .def_property_readonly(
-          "sampler", [](const PyScene& s) { return s.desc.sampler; },
-          "The scene's friction sampler name.")
+          "friction_provider", [](const PyScene& s) { return s.desc.friction_provider; },
+          "The scene's friction provider name (\"friction_provider\" in its settings).")
+      .def_property_readonly(
+          "sampler", [](const PyScene& s) { return s.desc.friction_provider; },
+          "The scene's friction provider name (the same as friction_provider).")
       .def_property_readonly(
           "dt", [](const PyScene& s) { return s.desc.settings.dt; }, "Time step (s).")
       .def("__repr__", [](const PyScene& s) {
@@ -75,14 +78,19 @@ void bindScene(py::module_& m) {
   m.def(
       "load_scene",
       [](const py::handle& scene, const std::string& base_dir) {
-        if (py::isinstance<py::dict>(scene)) return loadDict(scene.cast<py::dict>(), base_dir);
-        return sceneFrom(scene);
+        PyScene s = py::isinstance<py::dict>(scene) ? loadDict(scene.cast<py::dict>(), base_dir)
+                                                    : sceneFrom(scene);
+        // Deprecated keys are warned about here, once: worlds built from `s` do not repeat it.
+        for (const std::string& warning : s.desc.warnings) warn(warning);
+        s.desc.warnings.clear();
+        return s;
       },
       py::arg("path_or_dict"), py::arg("base_dir") = "",
       "Loads a scene from a JSON file (str or os.PathLike) or a dict of the same structure.\n\n"
       "Relative file names in a dict resolve against base_dir (default: the current folder).\n"
       "Raises FileNotFoundError for a missing file, ValueError naming the JSON path of a bad\n"
-      "value (the CLI's message), TypeError for something that is not a path or a dict.");
+      "value (the CLI's message), TypeError for something that is not a path or a dict.\n"
+      "Deprecated keys are read with a UserWarning naming the key to use instead.");
 }
 
 }  // namespace asperity::python

@@ -13,7 +13,7 @@ Sweep makeSweep(const std::string& json_text, const std::string& scene_file,
                 const std::vector<std::pair<std::string, std::string>>& vary, int64_t samples,
                 uint64_t seed, double seconds, const std::vector<std::string>& measures) {
   SweepDesc d;
-  d.scene = nlohmann::json::parse(json_text);
+  d.scene_json = json_text;
   d.scene_file = scene_file;
   for (const auto& [path, spec] : vary) d.vary.push_back(parseVariation(path, spec));
   d.samples = samples;

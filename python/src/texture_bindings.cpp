@@ -49,7 +49,14 @@ NormalMap fromArray(const py::handle& value, const char* name) {
 NormalMap loadPng(const std::string& path, bool directx) {
   if (!std::filesystem::is_regular_file(path))
     throwFileNotFound(path + ": cannot open (missing or unreadable)");
-  return loadNormalMapPng(path, directx ? GreenConvention::DirectX : GreenConvention::OpenGL);
+  NormalMapStats stats;
+  NormalMap map =
+      loadNormalMapPng(path, directx ? GreenConvention::DirectX : GreenConvention::OpenGL, &stats);
+  // Texels that are not normals read flat (SPEC 10), with a UserWarning.
+  Diagnostics diagnostics;
+  diagnostics.setSink(warn);
+  warnInvalidTexels(path, stats, diagnostics);
+  return map;
 }
 
 // A path or an array.

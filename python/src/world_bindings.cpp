@@ -10,7 +10,7 @@
 #include "asperity/world/run_loop.hpp"
 #include "world_state.hpp"
 #ifdef ASPERITY_HAVE_RENDER
-#include "asperity/sampler/gl_patch_sampler.hpp"
+#include "asperity/scene/gl_sampler_provider.hpp"
 #endif
 
 namespace asperity::python {
@@ -52,7 +52,7 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
         throwValue(std::string("sampler: ") + e.what());
       }
     }
-    w->scene.sampler = *sampler;
+    w->scene.friction_provider = *sampler;
   }
   if (directions && (*directions < kMinDirections || *directions > kMaxDirections))
     throwValue("directions: must be in 4..64, got " + std::to_string(*directions));
@@ -68,6 +68,8 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
   if (patch_width) s.friction.patch_width = *patch_width;
   if (patch_resolution) s.friction.patch_resolution = *patch_resolution;
   w->world = instantiate(w->scene, options);
+  // The scene's and the world's warnings become Python warnings, now and as they come.
+  w->world->diagnostics().setSink(warn);
   for (const Body& b : w->world->bodies())
     w->origin_offsets.push_back(b.com_offset.rotation.conjugate() * b.com_offset.position);
   return w;
@@ -117,6 +119,9 @@ void bindWorldActions(py::class_<PyWorld>& world) {
             return std::string(hash);
           },
           "16 hex digits, equal to `asperity run SCENE --hash` after the same steps.")
+      .def_property_readonly(
+          "warnings", [](const PyWorld& w) { return w.world->diagnostics().warnings(); },
+          "The world's warnings so far (each also issued as a UserWarning when it came).")
       .def("contacts", &contacts,
            "Contacts of the last step as a dict of arrays (C contacts, N directions): body_a, "
            "body_b (C,) int32; points, normals (C, 3); frames (C, 3, 3) rows t, b, n; phi (C,) "

@@ -27,7 +27,7 @@ def cli_error(*args):
 @pytest.fixture
 def minimal_scene():
     return {
-        "settings": {"sampler": "constant", "mu0": 0.5, "dt": 0.005},
+        "settings": {"friction_provider": "constant", "mu0": 0.5, "dt": 0.005},
         "bodies": [
             {"name": "ground", "type": "static", "shapes": [{"type": "plane"}]},
             {"name": "box", "position": [0, 0, 0.1], "linear_velocity": [1, 0, 0],

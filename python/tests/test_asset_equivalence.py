@@ -27,7 +27,7 @@ HALF = (0.5, 0.5, 0.05)  # the slab
 # A sawtooth of period 8 texels in a 256 map: 7.8 mm. The patch spans exactly five periods at
 # 40 x 40 pixels, so its mean hardly depends on where along the teeth a contact falls.
 PERIOD_M = REPEAT * 8 / 256
-SETTINGS = {"sampler": "cpu", "mu0": 0.1, "dt": 0.005, "frame": "world",
+SETTINGS = {"friction_provider": "cpu", "mu0": 0.1, "dt": 0.005, "frame_mode": "world",
             "patch_width": 5 * PERIOD_M, "patch_resolution": 40}
 
 
@@ -138,7 +138,7 @@ def test_fbx_and_collada_written_by_assimp_give_the_gltfs_friction(tmp_path, ext
 
     def contacts(asset):
         w = asperity.World(asperity.load_scene({
-            "settings": {"sampler": "cpu", "frame": "world"},
+            "settings": {"friction_provider": "cpu", "frame_mode": "world"},
             "bodies": [{"name": "plate", "type": "static",
                         "shapes": [{"type": "mesh", "file": str(tmp_path / asset)}]},
                        {"name": "box", "position": [0, 0, 0.0199],

@@ -1,6 +1,7 @@
 """Scenes as dicts and back; normal maps and cones equal to the CLI's."""
 
 import json
+import warnings
 
 import numpy as np
 import pytest
@@ -32,6 +33,41 @@ def test_bad_scenes_raise_the_loader_messages(tmp_path):
         asperity.load_scene(3.5)
     with pytest.raises(TypeError):
         asperity.load_scene({"bodies": [float]})
+
+
+def test_deprecated_keys_give_a_warning(minimal_scene):
+    old = dict(minimal_scene, settings={"sampler": "constant", "mu0": 0.5, "dt": 0.005})
+    message = r'<dict>: /settings/sampler: deprecated, use "friction_provider"'
+    # A world built from the dict warns, and keeps the warning.
+    with pytest.warns(UserWarning, match=message):
+        world = asperity.World(old)
+    assert world.warnings == ['<dict>: /settings/sampler: deprecated, use "friction_provider"']
+    # load_scene warns once; worlds built from its Scene do not repeat it.
+    with pytest.warns(UserWarning, match=message):
+        scene = asperity.load_scene(old)
+    assert scene.friction_provider == scene.sampler == "constant"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert asperity.World(scene).warnings == []
+        asperity.load_scene(minimal_scene)
+    # Saved back, only the new key is written.
+    assert "sampler" not in scene.to_dict()["settings"]
+    # The old and the new key together are an error naming the pointer.
+    both = dict(minimal_scene, settings={"sampler": "cpu", "friction_provider": "cpu"})
+    with pytest.raises(ValueError, match=r"<dict>: /settings/sampler: deprecated name of"):
+        asperity.load_scene(both)
+
+
+def test_named_materials_round_trip(tmp_path):
+    scene = asperity.load_scene(str(SCENES / "stacking.json"))
+    saved = scene.to_dict()
+    assert sorted(saved["materials"]) == ["acrylic", "cut_pvc", "oak"]
+    assert saved["bodies"][1]["shapes"][0]["surface"] == "acrylic"
+    bad = dict(saved)
+    bad["bodies"] = [dict(saved["bodies"][1], shapes=[dict(saved["bodies"][1]["shapes"][0],
+                                                           surface="teak")])]
+    with pytest.raises(ValueError, match=r'/bodies/0/shapes/0/surface: unknown material "teak"'):
+        asperity.load_scene(bad)
 
 
 def test_generated_texture_equals_the_cli_png(tmp_path):

@@ -22,11 +22,11 @@
 namespace asperity::collision_detail {
 
 struct CylinderSidePoint {
-  int id = 0;           // 0, 1: the ends of a face or capsule along the side; 2: one point
-  Vec3 on_cylinder;     // world, on the side surface
-  Vec3 on_shape;        // world, on the other shape's surface
-  Vec3 normal;          // world, radial, out of the cylinder toward the shape
-  double depth = 0.0;   // m, > 0 when they overlap
+  int id = 0;          // 0, 1: the ends of a face or capsule along the side; 2: one point
+  Vec3 on_cylinder;    // world, on the side surface
+  Vec3 on_shape;       // world, on the other shape's surface
+  Vec3 normal;         // world, radial, out of the cylinder toward the shape
+  double depth = 0.0;  // m, > 0 when they overlap
 };
 
 // Whether this path serves the pair's shape types (a cylinder and a box, capsule or sphere).

@@ -100,56 +100,63 @@ SurfaceSamples surfaceSamples(const TriangleMeshData& mesh, double spacing, size
   return out;
 }
 
-const std::vector<SdfHit>& sdfHits(const FieldDistance& field, const Transform& field_world,
-                                   std::span<const Vec3> points, const Transform& points_world,
-                                   const SdfQuery& query, SdfHitBuffers& buffers,
-                                   const SampleBlocks* blocks) {
-  // Every query point in the field's frame; keep those below the distance threshold.
-  const Transform to_field = field_world.inverse() * points_world;
-  std::vector<SdfHit>& hits = buffers.hits;
-  hits.clear();
-  // A point inside the bounds and not beyond the reach (decided in the lanes, below).
-  const auto test = [&](const Vec3& local, size_t i) {
-    const SignedDistanceField::Sample s = field(local, query.max_distance);
-    if (!s.inside_grid || s.distance >= query.max_distance) return;
-    SdfHit hit;
-    hit.vertex = static_cast<int>(i);
-    hit.triangle = s.triangle;
-    hit.distance = s.distance;
-    hit.point = field_world.apply(local);
-    hit.outward = field_world.rotation * s.gradient;
-    // The nearest surface point lies along the gradient by the distance.
-    hit.surface = field_world.apply(local - s.distance * s.gradient);
-    hits.push_back(hit);
-  };
+namespace {
+
+// The point tests of one sdfHits call: a point inside the bounds and not beyond the reach
+// (decided in the lanes) becomes a hit when the field puts it below the distance threshold.
+class HitTests {
+ public:
+  HitTests(const FieldDistance& field, const Transform& field_world, const Transform& to_field,
+           const SdfQuery& query, std::vector<SdfHit>& hits)
+      : field_(field),
+        field_world_(field_world),
+        query_(query),
+        hits_(hits),
+        to_field2_(to_field),
+        bounds2_(query.bounds) {}
+
   // Points [first, end), moved two at a time (the bits of to_field.apply); index(j) is the
   // query index of point j. Most points are outside the bounds or beyond a primitive's reach:
   // decided in the lanes, they never leave them.
-  const lanes::Transform2 to_field2(to_field);
-  const lanes::Box2 bounds2(query.bounds);
-  const auto testRange = [&](const Vec3* pts, size_t first, size_t end, const auto& index) {
+  template <class Index>
+  void testRange(const Vec3* pts, size_t first, size_t end, const Index& index) {
     for (size_t j = first; j < end; j += 2) {
       const size_t k = std::min(j + 1, end - 1);  // an odd last point fills both lanes
-      const lanes::Lanes3 local = to_field2.apply(lanes::of(pts[j], pts[k]));
-      const lanes::Mask skip = bounds2.outside(local) | field.beyond(local);
+      const lanes::Lanes3 local = to_field2_.apply(lanes::of(pts[j], pts[k]));
+      const lanes::Mask skip = bounds2_.outside(local) | field_.beyond(local);
       if (lanes::all(skip)) continue;
       if (!skip[0]) test(lanes::lane(local, 0), index(j));
       if (k != j && !skip[1]) test(lanes::lane(local, 1), index(k));
     }
-  };
-  if (blocks == nullptr) {
-    testRange(points.data(), 0, points.size(), [](size_t j) { return j; });
-  } else {
-    // The visiting order does not matter: the hits are sorted below.
-    const Mat3 abs_rotation = to_field.rotation.toRotationMatrix().cwiseAbs();
-    const auto order = [&](size_t j) { return static_cast<size_t>(blocks->order[j]); };
-    for (size_t b = 0; b < blocks->bounds.size(); ++b) {
-      if (unseenBlock(blocks->bounds[b], to_field, abs_rotation, query, field)) continue;
-      const size_t end = std::min(points.size(), (b + 1) * kSampleBlock);
-      testRange(blocks->points.data(), b * kSampleBlock, end, order);
-    }
   }
-  // Deepest first, then greedily drop hits too close to a kept one.
+
+ private:
+  // One point in the field's frame, kept when below the distance threshold.
+  void test(const Vec3& local, size_t i) {
+    const SignedDistanceField::Sample s = field_(local, query_.max_distance);
+    if (!s.inside_grid || s.distance >= query_.max_distance) return;
+    SdfHit hit;
+    hit.vertex = static_cast<int>(i);
+    hit.triangle = s.triangle;
+    hit.distance = s.distance;
+    hit.point = field_world_.apply(local);
+    hit.outward = field_world_.rotation * s.gradient;
+    // The nearest surface point lies along the gradient by the distance.
+    hit.surface = field_world_.apply(local - s.distance * s.gradient);
+    hits_.push_back(hit);
+  }
+
+  const FieldDistance& field_;
+  const Transform& field_world_;
+  const SdfQuery& query_;
+  std::vector<SdfHit>& hits_;
+  const lanes::Transform2 to_field2_;
+  const lanes::Box2 bounds2_;
+};
+
+// Deepest first, then greedily drop hits too close to a kept one (buffers.hits into kept).
+const std::vector<SdfHit>& keepSpreadHits(const SdfQuery& query, SdfHitBuffers& buffers) {
+  std::vector<SdfHit>& hits = buffers.hits;
   std::sort(hits.begin(), hits.end(), [](const SdfHit& a, const SdfHit& b) {
     return a.distance != b.distance ? a.distance < b.distance : a.vertex < b.vertex;
   });
@@ -164,6 +171,31 @@ const std::vector<SdfHit>& sdfHits(const FieldDistance& field, const Transform& 
     if (!crowded) kept.push_back(h);
   }
   return kept;
+}
+
+}  // namespace
+
+const std::vector<SdfHit>& sdfHits(const FieldDistance& field, const Transform& field_world,
+                                   std::span<const Vec3> points, const Transform& points_world,
+                                   const SdfQuery& query, SdfHitBuffers& buffers,
+                                   const SampleBlocks* blocks) {
+  // Every query point in the field's frame; keep those below the distance threshold.
+  const Transform to_field = field_world.inverse() * points_world;
+  buffers.hits.clear();
+  HitTests tests(field, field_world, to_field, query, buffers.hits);
+  if (blocks == nullptr) {
+    tests.testRange(points.data(), 0, points.size(), [](size_t j) { return j; });
+  } else {
+    // The visiting order does not matter: the hits are sorted below.
+    const Mat3 abs_rotation = to_field.rotation.toRotationMatrix().cwiseAbs();
+    const auto order = [&](size_t j) { return static_cast<size_t>(blocks->order[j]); };
+    for (size_t b = 0; b < blocks->bounds.size(); ++b) {
+      if (unseenBlock(blocks->bounds[b], to_field, abs_rotation, query, field)) continue;
+      const size_t end = std::min(points.size(), (b + 1) * kSampleBlock);
+      tests.testRange(blocks->points.data(), b * kSampleBlock, end, order);
+    }
+  }
+  return keepSpreadHits(query, buffers);
 }
 
 }  // namespace asperity::collision_detail

@@ -14,6 +14,7 @@
 struct asperity_friction {
   std::unique_ptr<asperity::ContactFriction> friction;  // null after a failed create
   std::string error;
+  std::string warnings;  // asperity_friction_warnings' text
 };
 
 namespace {
@@ -98,7 +99,7 @@ std::shared_ptr<const TriangleMeshData> meshOf(const asperity_shape& s) {
   return mesh;
 }
 
-Shape shapeOf(const asperity_shape& s) {
+Shape shapeOf(const asperity_shape& s, Diagnostics& diagnostics) {
   Shape shape;
   switch (s.type) {
     case ASPERITY_SHAPE_BOX:
@@ -133,7 +134,7 @@ Shape shapeOf(const asperity_shape& s) {
   shape.surface.gain = s.gain;
   shape.surface.texture_size = s.texture_size;
   shape.surface.texture_rotation = s.texture_rotation;
-  resolveSurface(shape.surface);
+  resolveSurface(shape.surface, diagnostics);
   return shape;
 }
 
@@ -238,6 +239,16 @@ const char* asperity_friction_error(const asperity_friction* handle) {
   return handle ? handle->error.c_str() : "the handle is null";
 }
 
+const char* asperity_friction_warnings(asperity_friction* handle) {
+  if (!handle) return "";
+  handle->warnings.clear();
+  if (handle->friction) {
+    for (const std::string& w : handle->friction->diagnostics().warnings())
+      handle->warnings += w + "\n";
+  }
+  return handle->warnings.c_str();
+}
+
 asperity_status asperity_friction_add_object(asperity_friction* handle, const char* name,
                                              const asperity_shape* shapes, size_t shape_count,
                                              uint32_t* id) {
@@ -245,7 +256,8 @@ asperity_status asperity_friction_add_object(asperity_friction* handle, const ch
     if (!name || !id || (!shapes && shape_count > 0)) throw Error("add_object: null argument");
     ObjectDesc desc;
     desc.name = name;
-    for (size_t i = 0; i < shape_count; ++i) desc.shapes.push_back(shapeOf(shapes[i]));
+    for (size_t i = 0; i < shape_count; ++i)
+      desc.shapes.push_back(shapeOf(shapes[i], f.diagnostics()));
     *id = f.addObject(desc);
   });
 }

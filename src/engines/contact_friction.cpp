@@ -82,6 +82,7 @@ struct ContactFriction::Impl {
   std::vector<ContactFrictionResult> results;
   std::map<SenseKey, Senses> senses;  // of the last compute
   double last_ms = 0.0;
+  Diagnostics diagnostics;
 
   Contact toContact(const EngineContact& e, size_t index) const;
   void assignRankKeys(std::span<const EngineContact> in);
@@ -203,9 +204,10 @@ ObjectId ContactFriction::addObject(const ObjectDesc& desc) {
     const Shape& s = desc.shapes[i];
     if (!finite(s.local.position) || !s.local.rotation.coeffs().allFinite())
       throw Error(what + ": shape " + std::to_string(i) + " has a non-finite transform");
-    if (s.surface.source.namesNormalMap() && !s.surface.normal_map)
-      throw Error(what + ": shape " + std::to_string(i) +
-                  " names a normal map that is not loaded (resolve its surface first)");
+    const std::string unresolved = unresolvedPart(s.surface);
+    if (!unresolved.empty())
+      throw Error(what + ": shape " + std::to_string(i) + ": " + unresolved +
+                  " is not resolved (resolveSurfaces, asperity/geometry/shape.hpp)");
   }
   const auto id = static_cast<ObjectId>(impl_->bodies.size());
   impl_->bodies.push_back(objectBody(desc));
@@ -257,6 +259,9 @@ void ContactFriction::forgetHistory() {
   impl_->senses.clear();
 }
 
+Diagnostics& ContactFriction::diagnostics() {
+  return impl_->diagnostics;
+}
 const ContactFrictionSettings& ContactFriction::settings() const {
   return impl_->settings;
 }

@@ -45,7 +45,7 @@ void finishProfile(RunProfile& p, const World& world) {
 RunProfile startProfile(const std::string& file, const SceneDesc& scene, double seconds) {
   RunProfile p;
   p.scene = std::filesystem::path(file).filename().string();
-  p.sampler = scene.sampler;
+  p.sampler = scene.friction_provider;
   p.dt = scene.settings.dt;
   p.mu0 = scene.settings.friction.mu0;
   p.patch_width = scene.settings.friction.patch_width;
@@ -75,7 +75,7 @@ Recording simulate(SceneDesc scene, const std::string& file, double seconds,
                    const RunOptions& options, const std::vector<std::string>& bodies,
                    std::optional<FrameMode> frame) {
   const std::string path = (std::filesystem::path(options.scenes_dir) / file).string();
-  if (!options.sampler.empty()) scene.sampler = options.sampler;
+  if (!options.sampler.empty()) scene.friction_provider = options.sampler;
   if (options.threads) scene.settings.threads = *options.threads;
   if (frame) scene.settings.frame_mode = *frame;
   Recording rec;
@@ -110,7 +110,7 @@ Recording simulate(SceneDesc scene, const std::string& file, double seconds,
 RunProfile profileScene(const std::string& path, double seconds, const std::string& sampler,
                         const FrictionProviders& providers, std::optional<int> threads) {
   SceneDesc scene = loadScene(path);
-  if (!sampler.empty()) scene.sampler = sampler;
+  if (!sampler.empty()) scene.friction_provider = sampler;
   if (threads) scene.settings.threads = *threads;
   std::unique_ptr<World> world = instantiate(scene, InstantiateOptions{providers});
   RunProfile p = startProfile(path, scene, seconds);

@@ -27,7 +27,7 @@ double rotationDegrees(const std::vector<Transform>& poses, size_t k) {
 double logoStart(const World& world) {
   const BodyId id = world.findBody("incline");
   if (id == kNoBody) throw Error("tumbling bunnies: no body named 'incline'");
-  const Surface& s = world.bodyDesc(id).shapes.at(0).surface;
+  const Surface& s = world.body(id).shapes.at(0).surface;
   double scale = 0.8;  // the emboss generator's default logo width (fraction of the tile)
   const auto it = s.source.generator.params.find("scale");
   if (it != s.source.generator.params.end()) scale = std::stod(it->second);

@@ -66,7 +66,8 @@ ASPERITY_TARGET_AVX2 void sweepAvx2(std::span<const float> gx, std::span<const f
 }  // namespace
 
 void accumulateDirectionalSums(std::span<const float> gx, std::span<const float> gy,
-                               std::span<const Vec2> directions, std::span<double> sums) {
+                               std::span<const Vec2> directions, std::span<double> sums,
+                               SimdCopy copy) {
   // Shapes must match: one g per fragment, one sum per direction.
   if (gx.size() != gy.size() || sums.size() != directions.size()) {
     throw Error("accumulateDirectionalSums: sizes differ (gx " + std::to_string(gx.size()) +
@@ -74,7 +75,7 @@ void accumulateDirectionalSums(std::span<const float> gx, std::span<const float>
                 std::to_string(directions.size()) + ", sums " + std::to_string(sums.size()) + ")");
   }
 #if ASPERITY_AVX2_COPIES
-  if (simd::avx2()) return sweepAvx2(gx, gy, directions, sums);
+  if (simd::avx2(copy)) return sweepAvx2(gx, gy, directions, sums);
 #endif
   sweepBody(gx, gy, directions, sums);
 }

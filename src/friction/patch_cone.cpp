@@ -18,7 +18,7 @@ constexpr size_t kBlock = 4096;
 // Per-direction mean of max(0, g.d) over every texel of one map (Eq. 8 over the whole map).
 // Texel normals go to the contact frame as (x, y, z) for B and (x, -y, -z) for A (see header).
 std::vector<double> surfaceMeans(const NormalMap& map, Side side, std::span<const Vec2> dirs,
-                                 float mu_max) {
+                                 float mu_max, SimdCopy simd) {
   std::vector<double> sums(dirs.size(), 0.0);
   const std::vector<Vec3f>& texels = map.texels();
   const float flip = side == Side::B ? 1.0f : -1.0f;
@@ -33,7 +33,7 @@ std::vector<double> surfaceMeans(const NormalMap& map, Side side, std::span<cons
       gy[i] = g.y();
     }
     accumulateDirectionalSums(std::span<const float>(gx.data(), len),
-                              std::span<const float>(gy.data(), len), dirs, sums);
+                              std::span<const float>(gy.data(), len), dirs, sums, simd);
   }
   for (double& s : sums) s /= static_cast<double>(texels.size());
   return sums;
@@ -51,9 +51,9 @@ DirectionalMu flatPatchCone(const NormalMap* a, const NormalMap& b, const PatchC
   if (b.empty()) throw Error("flatPatchCone: normal map of surface B is empty");
   if (a != nullptr && a->empty()) throw Error("flatPatchCone: normal map of surface A is empty");
   // Eq. 8 per surface (a flat A contributes nothing), then Eq. 7.
-  const std::vector<double> mean_b = surfaceMeans(b, Side::B, dirs, opt.mu_max);
+  const std::vector<double> mean_b = surfaceMeans(b, Side::B, dirs, opt.mu_max, opt.simd);
   std::vector<double> mean_a;
-  if (a != nullptr) mean_a = surfaceMeans(*a, Side::A, dirs, opt.mu_max);
+  if (a != nullptr) mean_a = surfaceMeans(*a, Side::A, dirs, opt.mu_max, opt.simd);
   return combinePatch(mean_a, mean_b, opt.gains);
 }
 

@@ -24,7 +24,8 @@ std::string resolveBeside(const std::string& dir, const std::string& ref);
 std::vector<uint8_t> readAssetFile(const std::string& path, const std::string& asset,
                                    const std::string& part);
 
-// Decodes a normal texture (SPEC 10 hygiene), errors and the warning naming asset and part.
+// Decodes a normal texture (SPEC 10 hygiene), errors naming asset and part; invalid texels
+// are counted in `stats` (AssetMaterial::normal_stats), which the caller reports.
 NormalMap decodeAssetNormalMap(const std::vector<uint8_t>& bytes, const std::string& asset,
                                const std::string& part, GreenConvention green, double scale,
                                NormalMapStats& stats);

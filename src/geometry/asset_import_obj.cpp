@@ -78,8 +78,7 @@ std::vector<uint8_t> readAssetFile(const std::string& path, const std::string& a
 NormalMap decodeAssetNormalMap(const std::vector<uint8_t>& bytes, const std::string& asset,
                                const std::string& part, GreenConvention green, double scale,
                                NormalMapStats& stats) {
-  // Errors and the invalid-texel warning name the asset and the image.
-  const std::string name = asset + ": normal map " + part;
+  // Errors name the asset and the image; invalid texels are counted in `stats` for the caller.
   NormalMap map;
   try {
     // The image's own name inside the decoder's message (part is `image 'NAME'`).
@@ -90,7 +89,6 @@ NormalMap decodeAssetNormalMap(const std::vector<uint8_t>& bytes, const std::str
   } catch (const Error& e) {
     throw Error(asset + ": normal map: " + e.what());
   }
-  warnInvalidTexels(name, stats);
   return map;
 }
 

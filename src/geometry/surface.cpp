@@ -1,8 +1,9 @@
-// Surfaces from their sources: normal maps read or generated, gain masks read.
+// Surfaces from their sources: normal maps read or generated, gain masks read; the resolver
+// that code calls before World::createBody.
 #include "asperity/geometry/surface.hpp"
 
-#include <iostream>
-
+#include "asperity/error.hpp"
+#include "asperity/geometry/shape.hpp"
 #include "asperity/texture/map_inspect.hpp"
 #include "texture/png_codec.hpp"
 
@@ -12,22 +13,26 @@ namespace {
 
 // Warns when the map, read with the surface's `directx` setting, has slopes that clearly fit
 // the other green convention (map_inspect: the curl of the implied slope field).
-void warnGreenContradiction(const std::string& path, GreenConvention green, const NormalMap& map) {
+void warnGreenContradiction(const std::string& path, GreenConvention green, const NormalMap& map,
+                            Diagnostics& diagnostics) {
   if (judgeGreenConvention(map).verdict != GreenVerdict::DirectX) return;
   const bool directx = green == GreenConvention::DirectX;
-  std::cerr << "asperity: warning: " << path
-            << ": the surface says \"directx\": " << (directx ? "true" : "false")
-            << " but the map's slopes fit the " << (directx ? "OpenGL" : "DirectX")
-            << " convention (asperity texture inspect)\n";
+  diagnostics.warn(path + ": the surface says \"directx\": " + (directx ? "true" : "false") +
+                   " but the map's slopes fit the " + (directx ? "OpenGL" : "DirectX") +
+                   " convention (asperity texture inspect)");
 }
 
 }  // namespace
 
-std::shared_ptr<const NormalMap> loadNormalMap(const SurfaceSource& source) {
+std::shared_ptr<const NormalMap> loadNormalMap(const SurfaceSource& source,
+                                               Diagnostics& diagnostics) {
+  // A file: decoded, then its invalid texels and green convention reported.
   if (!source.normal_map_file.empty()) {
-    auto map =
-        std::make_shared<const NormalMap>(loadNormalMapPng(source.normal_map_file, source.green));
-    warnGreenContradiction(source.normal_map_file, source.green, *map);
+    NormalMapStats stats;
+    auto map = std::make_shared<const NormalMap>(
+        loadNormalMapPng(source.normal_map_file, source.green, &stats));
+    warnInvalidTexels(source.normal_map_file, stats, diagnostics);
+    warnGreenContradiction(source.normal_map_file, source.green, *map, diagnostics);
     return map;
   }
   if (!source.generator.name.empty())
@@ -51,10 +56,32 @@ GainMask loadGainMask(const std::string& path) {
   return mask;
 }
 
-void resolveSurface(Surface& surface) {
-  if (!surface.normal_map) surface.normal_map = loadNormalMap(surface.source);
+void resolveSurface(Surface& surface, Diagnostics& diagnostics) {
+  if (!surface.normal_map) surface.normal_map = loadNormalMap(surface.source, diagnostics);
   if (!surface.mask && !surface.source.mask_file.empty())
     surface.mask = std::make_shared<const GainMask>(loadGainMask(surface.source.mask_file));
+}
+
+std::string unresolvedPart(const Surface& surface) {
+  const SurfaceSource& s = surface.source;
+  // The normal map first: a file, else a generator; then the mask.
+  if (!surface.normal_map && !s.normal_map_file.empty())
+    return "normal map \"" + s.normal_map_file + "\"";
+  if (!surface.normal_map && !s.generator.name.empty())
+    return "normal map generator \"" + s.generator.name + "\"";
+  if (!surface.mask && !s.mask_file.empty()) return "mask \"" + s.mask_file + "\"";
+  return "";
+}
+
+void resolveSurfaces(std::span<Shape> shapes, Diagnostics& diagnostics) {
+  // Errors name the shape, as World::createBody's do.
+  for (size_t i = 0; i < shapes.size(); ++i) {
+    try {
+      resolveSurface(shapes[i].surface, diagnostics);
+    } catch (const Error& e) {
+      throw Error("shape " + std::to_string(i) + ": " + e.what());
+    }
+  }
 }
 
 }  // namespace asperity

@@ -111,11 +111,11 @@ void installDebugHook(const DebugHook* hook) {
   glDebugMessageCallback(debugCallback, hook);
 }
 
-GlContext::GlContext(const GlContextOptions& options) {
-  EGLDisplay display = openDisplay(platform_);
-  display_ = display;
+namespace {
 
-  // A config that can render desktop OpenGL (pbuffer bit for the fallback surface).
+// A config that can render desktop OpenGL (pbuffer bit for the fallback surface); on a
+// surfaceless display one without that bit will do.
+EGLConfig chooseConfig(EGLDisplay display, bool surfaceless, const std::string& platform) {
   const EGLint config_attribs[] = {EGL_SURFACE_TYPE,
                                    EGL_PBUFFER_BIT,
                                    EGL_RENDERABLE_TYPE,
@@ -131,19 +131,22 @@ GlContext::GlContext(const GlContextOptions& options) {
                                    EGL_NONE};
   EGLConfig config = nullptr;
   EGLint num_configs = 0;
-  const bool surfaceless = epoxy_has_egl_extension(display, "EGL_KHR_surfaceless_context");
-  if (eglChooseConfig(display, config_attribs, &config, 1, &num_configs) != EGL_TRUE ||
+  if (eglChooseConfig(display, config_attribs, &config, 1, &num_configs) == EGL_TRUE &&
+      num_configs > 0)
+    return config;
+  // Surfaceless displays may expose configs without the pbuffer bit.
+  const EGLint any[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  if (!surfaceless || eglChooseConfig(display, any, &config, 1, &num_configs) != EGL_TRUE ||
       num_configs == 0) {
-    // Surfaceless displays may expose configs without the pbuffer bit.
-    const EGLint any[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
-    if (!surfaceless || eglChooseConfig(display, any, &config, 1, &num_configs) != EGL_TRUE ||
-        num_configs == 0) {
-      throw Error("OpenGL: no EGL config for desktop OpenGL on the " + platform_ + " display (" +
-                  eglErrorText() + ")");
-    }
+    throw Error("OpenGL: no EGL config for desktop OpenGL on the " + platform + " display (" +
+                eglErrorText() + ")");
   }
+  return config;
+}
 
-  // Core profile of the requested version.
+// A core profile context of the requested version.
+EGLContext createCoreContext(EGLDisplay display, EGLConfig config, const GlContextOptions& options,
+                             const std::string& platform) {
   const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
                                     options.major,
                                     EGL_CONTEXT_MINOR_VERSION,
@@ -157,11 +160,21 @@ GlContext::GlContext(const GlContextOptions& options) {
   if (context == EGL_NO_CONTEXT) {
     const std::string why = eglErrorText();
     throw Error("OpenGL: cannot create a " + std::to_string(options.major) + "." +
-                std::to_string(options.minor) + " core context on the " + platform_ + " display (" +
+                std::to_string(options.minor) + " core context on the " + platform + " display (" +
                 why + ")");
   }
-  context_ = context;
+  return context;
+}
 
+}  // namespace
+
+GlContext::GlContext(const GlContextOptions& options) {
+  EGLDisplay display = openDisplay(platform_);
+  display_ = display;
+  const bool surfaceless = epoxy_has_egl_extension(display, "EGL_KHR_surfaceless_context");
+  EGLConfig config = chooseConfig(display, surfaceless, platform_);
+  EGLContext context = createCoreContext(display, config, options, platform_);
+  context_ = context;
   // No surface where allowed, else a small pbuffer (rendering goes to framebuffer objects).
   if (!surfaceless) {
     const EGLint pbuffer_attribs[] = {EGL_WIDTH, 16, EGL_HEIGHT, 16, EGL_NONE};

@@ -1,25 +1,15 @@
-// Which copy of the hot loops runs (simd.hpp).
+// Whether the AVX2 copies of the hot loops can run (simd.hpp).
 #include "math/simd.hpp"
-
-#include <atomic>
 
 namespace asperity::simd {
 
-namespace {
-std::atomic<bool> forced_baseline{false};
-}  // namespace
-
-bool avx2() {
+bool avx2Available() {
 #if ASPERITY_AVX2_COPIES
   static const bool has = __builtin_cpu_supports("avx2");
-  return has && !forced_baseline.load(std::memory_order_relaxed);
+  return has;
 #else
   return false;
 #endif
-}
-
-void forceBaseline(bool on) {
-  forced_baseline.store(on, std::memory_order_relaxed);
 }
 
 }  // namespace asperity::simd

@@ -5,9 +5,12 @@
 //
 // A function `f` is written once as an always-inlined `fBody`; ASPERITY_TARGET_AVX2 marks the
 // copy `fAvx2` that calls it, compiled with AVX2 through the inlining, and `f` picks one with
-// simd::avx2(). GCC on x86-64 only (elsewhere, and in the clang sanitizer build, `f` is the
-// body alone).
+// simd::avx2(copy), `copy` being its caller's option (asperity/math/simd_copy.hpp) carried down
+// the calls. GCC on x86-64 only (elsewhere, and in the clang sanitizer build, `f` is the body
+// alone).
 #pragma once
+
+#include "asperity/math/simd_copy.hpp"
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define ASPERITY_AVX2_COPIES 1
@@ -18,10 +21,11 @@
 
 namespace asperity::simd {
 
-// Whether the AVX2 copies run: the processor has AVX2 and forceBaseline(true) is not in effect.
-bool avx2();
-// Runs the baseline copies even where AVX2 is there (tests compare the two; not thread-safe
-// against steps running at the same time).
-void forceBaseline(bool on);
+// Whether this build has the AVX2 copies and the processor runs AVX2.
+bool avx2Available();
+// Whether `copy` runs the AVX2 copies: Auto where they are available, Baseline never.
+inline bool avx2(SimdCopy copy) {
+  return copy == SimdCopy::Auto && avx2Available();
+}
 
 }  // namespace asperity::simd

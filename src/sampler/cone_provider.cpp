@@ -28,6 +28,7 @@ const DirectionalMu& ConeProvider::coneOf(const std::shared_ptr<const NormalMap>
   PatchConeOptions opt;
   opt.directions = kConeDirections;
   opt.mu_max = mu_max;
+  opt.simd = simd_;
   DirectionalMu cone;
   if (side == Side::B) {
     opt.gains = PatchGains{0.0, 0.0, 1.0};

@@ -42,8 +42,9 @@ double msBetween(Clock::time_point a, Clock::time_point b) {
 
 // Scratch kept between calls: rasters, fragment arrays, sample directions.
 struct CpuPatchSampler::State {
-  explicit State(patch::MeshCache& shared) : meshes(shared) {}
+  State(patch::MeshCache& shared, SimdCopy copy) : meshes(shared), simd(copy) {}
   patch::MeshCache& meshes;  // the sampler's, shared by every thread's state
+  SimdCopy simd;             // the sampler's option, for every loop this state runs
   patch::GeometryScratch geometry;
   std::array<patch::SurfaceRaster, 2> raster;  // A, B
   std::vector<uint32_t> in_patch;              // P as Volume::pack(i, j)
@@ -165,7 +166,8 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
                                                                   PatchImages* images) {
   const Clock::time_point t0 = Clock::now();
   prepare(settings);
-  const patch::Volume volume = patch::makeVolume(contact, settings);
+  patch::Volume volume = patch::makeVolume(contact, settings);
+  volume.simd = simd;
   const patch::ShapeRange ranges[2] = {patch::shapesOf(bodies, contact, Side::A),
                                        patch::shapesOf(bodies, contact, Side::B)};
   // Rasterise both surfaces and find P, then shade P into ploughing vectors (A, then B).
@@ -183,7 +185,7 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
     if (count == 0) continue;
     accumulateDirectionalSums(std::span<const float>(gx.data() + s * count, count),
                               std::span<const float>(gy.data() + s * count, count), directions,
-                              std::span<double>(sums[s].data(), n));
+                              std::span<double>(sums[s].data(), n), simd);
   }
   // Eq. 7 (or the fallback).
   patch::finishContact(contact, std::span<const double>(sums[0].data(), n),
@@ -196,9 +198,10 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   return {raster[0].depth, raster[1].depth};
 }
 
-CpuPatchSampler::CpuPatchSampler()
-    : meshes_(std::make_unique<patch::MeshCache>()),
-      state_(std::make_unique<State>(*meshes_)),
+CpuPatchSampler::CpuPatchSampler(const CpuSamplerOptions& options)
+    : options_(options),
+      meshes_(std::make_unique<patch::MeshCache>()),
+      state_(std::make_unique<State>(*meshes_, options.simd)),
       reuse_(std::make_unique<patch::PatchReuse>()) {}
 
 void CpuPatchSampler::forgetHistory() {
@@ -239,7 +242,7 @@ void CpuPatchSampler::sampleOnPool(std::span<const Body> bodies, std::span<Conta
   for (size_t i = 0; i < contacts.size(); ++i)
     if (!reused_[i]) patch::prepareMeshes(*meshes_, bodies, contacts[i], false);
   while (worker_states_.size() < static_cast<size_t>(pool_->concurrency()))
-    worker_states_.push_back(std::make_unique<State>(*meshes_));
+    worker_states_.push_back(std::make_unique<State>(*meshes_, options_.simd));
   for (auto& st : worker_states_) st->patch_ms = st->averaging_ms = 0.0;
   // Each contact is sampled alone (it writes only itself), with the scratch of the thread
   // that runs it: the coefficients are the same whichever thread that is.

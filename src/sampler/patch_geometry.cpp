@@ -8,29 +8,14 @@
 #include "asperity/error.hpp"
 #include "geometry/shape_mesh_internal.hpp"
 #include "sampler/patch_common.hpp"
+#include "sampler/patch_faces.hpp"
 
 namespace asperity::patch {
 
 namespace {
 
-// Where the shape frame sits in the contact frame: p_c = m p_local + o.
-struct Placement {
-  Mat3 m;
-  Vec3 o;
-};
-
-Placement place(const Volume& volume, const Transform& pose) {
-  const Mat3 at = volume.axes.transpose();
-  return {at * pose.rotation.toRotationMatrix(), at * (pose.position - volume.origin)};
-}
-
 Material materialOf(const Shape& shape) {
   return {shape.surface.normal_map.get(), shape.surface.mask.get()};
-}
-
-// A fragment of `side` is kept only if the geometric normal faces the other body (SPEC 3).
-bool facesOther(Side side, double normal_z) {
-  return side == Side::B ? normal_z > 0.0 : normal_z < 0.0;
 }
 
 void setFrame(PolygonVertex& v, const Vec3& t, const Vec3& b, const Vec3& n) {
@@ -39,6 +24,16 @@ void setFrame(PolygonVertex& v, const Vec3& t, const Vec3& b, const Vec3& n) {
     v.tbn[static_cast<size_t>(3 + k)] = b[k];
     v.tbn[static_cast<size_t>(6 + k)] = n[k];
   }
+}
+
+// A shared face corner (patch_faces.hpp) as the rasteriser's polygon vertex.
+PolygonVertex polygonVertex(const FaceCorner& c) {
+  PolygonVertex v;
+  v.p = c.p;
+  v.u = c.u;
+  v.v = c.v;
+  setFrame(v, c.t, c.b, c.n);
+  return v;
 }
 
 // Keeps uv small (the texture repeats): subtract the first vertex's whole repeats.
@@ -85,61 +80,45 @@ bool sphereMissesVolume(const Volume& volume, const Placement& pl, double reach,
 
 void rasteriseBox(const Volume& volume, const Shape& shape, const Placement& pl,
                   SurfaceRaster& raster) {
-  static const std::array<SurfaceFrame, 6> kFaces = {boxFaceFrame(0), boxFaceFrame(1),
-                                                     boxFaceFrame(2), boxFaceFrame(3),
-                                                     boxFaceFrame(4), boxFaceFrame(5)};
   const double scale = detail::textureScale(shape);
-  const Vec3 h = shape.half_extents;
   // Quick reject: the bounding sphere misses the volume.
-  if (sphereMissesVolume(volume, pl, h.norm(), raster)) return;
-  // Each face that faces the other body is a quad (corners counter-clockwise seen from outside).
-  for (const SurfaceFrame& f : kFaces) {
-    const Vec3 nc = pl.m * f.n;
-    if (!facesOther(raster.side, nc.z())) continue;
-    const Vec3 centre = f.n.cwiseProduct(h), et = f.t.cwiseProduct(h), eb = f.b.cwiseProduct(h);
-    if (faceMissesVolume(volume, pl.m * centre + pl.o, pl.m * et, pl.m * eb, raster)) continue;
-    const SurfaceFrame tex = rotateTexture(f, shape.surface.texture_rotation);
-    const Vec3 tc = pl.m * tex.t, bc = pl.m * tex.b;
-    static constexpr double su[4] = {-1, 1, 1, -1}, sv[4] = {-1, -1, 1, 1};
+  if (sphereMissesVolume(volume, pl, shape.half_extents.norm(), raster)) return;
+  // Each face that faces the other body and may reach the volume is a quad.
+  std::array<BoxFace, 6> faces;
+  const int count = facingBoxFaces(shape, pl, raster.side, faces);
+  for (int f = 0; f < count; ++f) {
+    const BoxFace& face = faces[static_cast<size_t>(f)];
+    if (faceMissesVolume(volume, pl.m * face.centre + pl.o, pl.m * face.et, pl.m * face.eb, raster))
+      continue;
+    const std::array<FaceCorner, 4> corners = boxFaceCorners(shape, pl, face, scale);
     PolygonVertex v[4];
-    for (int k = 0; k < 4; ++k) {
-      const Vec3 p = centre + su[k] * et + sv[k] * eb;
-      v[k].p = pl.m * p + pl.o;
-      v[k].u = scale * p.dot(tex.t);
-      v[k].v = scale * p.dot(tex.b);
-      setFrame(v[k], tc, bc, nc);
-    }
+    for (size_t k = 0; k < 4; ++k) v[k] = polygonVertex(corners[k]);
     pushPolygon(volume, v, 4, false, materialOf(shape), raster);
   }
 }
 
 void rasterisePlane(const Volume& volume, const Shape& shape, const Placement& pl,
                     SurfaceRaster& raster) {
-  // The plane {n.x = offset} in the contact frame; skip it edge-on or facing away.
-  const double len = shape.plane_normal.norm();
-  if (!(len > 0.0)) throw Error("plane shape: plane_normal is zero");
-  const Vec3 nl = shape.plane_normal / len;
-  const Vec3 nc = pl.m * nl;
-  if (!facesOther(raster.side, nc.z()) || std::abs(nc.z()) < 1e-9) return;
-  const Vec3 p0 = pl.m * (shape.plane_offset / len * nl) + pl.o;
+  FacingPlane plane;
+  if (!facingPlane(shape, pl, raster.side, plane)) return;
+  const Vec3& nc = plane.normal;
+  const Vec3& p0 = plane.point;
   Planar prim;
   prim.edge_count = 0;
   // Depth over the contact plane: z = p0.z - (nc.x (x - p0.x) + nc.y (y - p0.y)) / nc.z.
   prim.z = {p0.z() + (nc.x() * p0.x() + nc.y() * p0.y()) / nc.z(), -nc.x() / nc.z(),
             -nc.y() / nc.z()};
   // uv = scale (T, B) . p_local: affine in (x, y) through z(x, y); whole repeats removed.
-  const SurfaceFrame tex = rotateTexture(detail::planeFrame(nl), shape.surface.texture_rotation);
-  const double scale = detail::textureScale(shape);
   auto uvAffine = [&](const Vec3& axis) {
-    const Vec3 g = scale * (pl.m * axis);
+    const Vec3 g = plane.scale * (pl.m * axis);
     Affine a{g.z() * prim.z.c - g.dot(pl.o), g.x() + g.z() * prim.z.dx, g.y() + g.z() * prim.z.dy};
     a.c -= std::floor(a.c);
     return a;
   };
-  prim.u = uvAffine(tex.t);
-  prim.v = uvAffine(tex.b);
+  prim.u = uvAffine(plane.texture.t);
+  prim.v = uvAffine(plane.texture.b);
   setFloatUv(prim);
-  const Vec3 tc = pl.m * tex.t, bc = pl.m * tex.b;
+  const Vec3 &tc = plane.t, &bc = plane.b;
   for (int k = 0; k < 3; ++k) {
     prim.tbn[static_cast<size_t>(k)].c = tc[k];
     prim.tbn[static_cast<size_t>(3 + k)].c = bc[k];
@@ -179,17 +158,9 @@ void rasteriseCurvedShape(const Volume& volume, const Shape& shape, const Placem
 void rasteriseMesh(const Volume& volume, const Shape& shape, const Placement& pl, MeshCache& meshes,
                    GeometryScratch& scratch, SurfaceRaster& raster) {
   const CachedMesh& cached = meshes.get(shape);
-  const ShapeMesh& mesh = cached.mesh;
   raster.depth.forget();  // the query below depends on the depth clip
-  // The volume's box in the shape frame, then the triangles whose boxes overlap it.
-  const Mat3 to_local = pl.m.transpose();
-  Aabb box;
-  for (int c = 0; c < 8; ++c) {
-    const Vec3 corner(c & 1 ? 0.5 * volume.width : -0.5 * volume.width,
-                      c & 2 ? 0.5 * volume.width : -0.5 * volume.width,
-                      c & 4 ? volume.half_depth : -volume.half_depth);
-    box.grow(Vec3f((to_local * (corner - pl.o)).cast<float>()));
-  }
+  // The volume's box in the shape frame (padded), then the triangles whose boxes overlap it.
+  Aabb box = volumeBoxInShape(volume, pl);
   const float pad = 1e-6f * static_cast<float>(volume.width);
   box.lo.array() -= pad;
   box.hi.array() += pad;
@@ -198,18 +169,10 @@ void rasteriseMesh(const Volume& volume, const Shape& shape, const Placement& pl
   // Each triangle facing the other body, in the contact frame with its attributes.
   const Material material = materialOf(shape);
   for (int index : scratch.triangles) {
-    const auto& tri = mesh.triangles[static_cast<size_t>(index)];
+    const std::array<FaceCorner, 3> corners = meshTriangleCorners(cached.mesh, index, pl);
+    if (!triangleFacesOther(raster.side, corners)) continue;
     PolygonVertex v[3];
-    for (int k = 0; k < 3; ++k) {
-      const auto vi = static_cast<size_t>(tri[static_cast<size_t>(k)]);
-      v[k].p = pl.m * mesh.positions[vi].cast<double>() + pl.o;
-      v[k].u = mesh.uvs[vi].x();
-      v[k].v = mesh.uvs[vi].y();
-      setFrame(v[k], pl.m * mesh.tangents[vi].cast<double>(),
-               pl.m * mesh.bitangents[vi].cast<double>(), pl.m * mesh.normals[vi].cast<double>());
-    }
-    const Vec3 e1 = v[1].p - v[0].p, e2 = v[2].p - v[0].p;
-    if (!facesOther(raster.side, e1.x() * e2.y() - e1.y() * e2.x())) continue;
+    for (size_t k = 0; k < 3; ++k) v[k] = polygonVertex(corners[k]);
     pushPolygon(volume, v, 3, cached.smooth, material, raster);
   }
 }
@@ -247,8 +210,8 @@ void prepareMeshes(MeshCache& meshes, std::span<const Body> bodies, const Contac
     const ShapeRange range = shapesOf(bodies, contact, side);
     for (int k = range.first; k < range.last; ++k) {
       const Shape& shape = range.body->shapes[static_cast<size_t>(k)];
-      const bool meshed = shape.type == ShapeType::TriangleMesh ||
-                          shape.type == ShapeType::ConvexHull;
+      const bool meshed =
+          shape.type == ShapeType::TriangleMesh || shape.type == ShapeType::ConvexHull;
       if (meshed || (meshed_curves && isCurved(shape.type))) meshes.get(shape);
     }
   }

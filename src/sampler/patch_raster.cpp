@@ -166,10 +166,11 @@ void noteEdgeOn(const Volume& volume, const PolygonVertex* vtx, int count, Depth
     depth.forget();
 }
 
-}  // namespace
-
-bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool smooth,
-                const Material& material, Planar& out, DepthMargins& depth) {
+// The polygon's pixel bounds in `out`; false when it surely covers no pixel centre: entirely
+// beyond the depth clip or the footprint, or seen so nearly edge-on that its band within the
+// clip holds no centre (decisions noted in `depth`).
+bool boundPixels(const Volume& volume, const PolygonVertex* vtx, int count, Planar& out,
+                 DepthMargins& depth) {
   // Reject: entirely beyond the depth clip or the footprint.
   double zmin = kInf, zmax = -kInf, xmin = kInf, xmax = -kInf, ymin = kInf, ymax = -kInf;
   for (int k = 0; k < count; ++k) {
@@ -196,14 +197,11 @@ bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool 
       return false;
     }
   }
-  // Edge-on (zero projected area) primitives cover no pixel centre.
-  const Vec3 &p0 = vtx[0].p, &p1 = vtx[1].p, &p2 = vtx[2].p;
-  Eigen::Matrix2d m;
-  m << p1.x() - p0.x(), p2.x() - p0.x(), p1.y() - p0.y(), p2.y() - p0.y();
-  const double det = m.determinant();
-  if (!(det > 1e-30 * volume.width * volume.width)) return false;
-  const Eigen::Matrix2d inv = m.inverse();
-  // Edges with the top-left rule (counter-clockwise, y up: left edges go down).
+  return true;
+}
+
+// Edges with the top-left rule (counter-clockwise, y up: left edges go down).
+void setEdges(const PolygonVertex* vtx, int count, Planar& out) {
   out.edge_count = count;
   for (int k = 0; k < count; ++k) {
     const Vec3& a = vtx[k].p;
@@ -214,7 +212,12 @@ bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool 
     e.c = -(e.a * a.x() + e.b * a.y());
     e.inclusive = b.y() < a.y() || (b.y() == a.y() && b.x() < a.x());
   }
-  // Affine depth, uv and frame through the first three vertices (the polygon is planar).
+}
+
+// Affine depth, uv and frame through the first three vertices (the polygon is planar); `inv`
+// inverts their (x, y) differences from the first.
+void fitAttributes(const PolygonVertex* vtx, bool smooth, const Eigen::Matrix2d& inv, Planar& out) {
+  const Vec3 &p0 = vtx[0].p, &p1 = vtx[1].p, &p2 = vtx[2].p;
   out.z = fitAffine(p0, p0.z(), p1.z(), p2.z(), inv);
   out.u = fitAffine(p0, vtx[0].u, vtx[1].u, vtx[2].u, inv);
   out.v = fitAffine(p0, vtx[0].v, vtx[1].v, vtx[2].v, inv);
@@ -229,6 +232,22 @@ bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool 
     }
   }
   setFloatUv(out);
+}
+
+}  // namespace
+
+bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool smooth,
+                const Material& material, Planar& out, DepthMargins& depth) {
+  if (!boundPixels(volume, vtx, count, out, depth)) return false;
+  // Edge-on (zero projected area) primitives cover no pixel centre.
+  const Vec3 &p0 = vtx[0].p, &p1 = vtx[1].p, &p2 = vtx[2].p;
+  Eigen::Matrix2d m;
+  m << p1.x() - p0.x(), p2.x() - p0.x(), p1.y() - p0.y(), p2.y() - p0.y();
+  const double det = m.determinant();
+  if (!(det > 1e-30 * volume.width * volume.width)) return false;
+  const Eigen::Matrix2d inv = m.inverse();
+  setEdges(vtx, count, out);
+  fitAttributes(vtx, smooth, inv, out);
   out.material = material;
   return true;
 }
@@ -387,75 +406,107 @@ struct CentreBox {
   return !cuts.depth || std::abs(prim.z.at(x, y)) <= h;
 }
 
-[[gnu::always_inline]] inline void rasterisePlanarBody(const Volume& volume, const Planar& prim,
-                                                       int32_t id, SurfaceRaster& raster) {
+// Row j's pixels: the primitive's bounds within the window.
+[[gnu::always_inline]] inline int rowLo(const Planar& prim, const SurfaceRaster& raster, int j) {
+  return std::max(prim.i0, raster.win_lo[static_cast<size_t>(j)]);
+}
+[[gnu::always_inline]] inline int rowHi(const Planar& prim, const SurfaceRaster& raster, int j) {
+  return std::min(prim.i1, raster.win_hi[static_cast<size_t>(j)]);
+}
+
+// Small primitives (mesh triangles near pixel size), rows j0..j1: the exact test per pixel.
+[[gnu::always_inline]] inline void rasteriseSmallPlanar(const Volume& volume, const Planar& prim,
+                                                        int32_t id, int j0, int j1,
+                                                        SurfaceRaster& raster) {
   const int r = volume.resolution;
   const double h = volume.half_depth;
   const float sign = raster.side == Side::B ? 1.0f : -1.0f;
-  const int j0 = std::max(prim.j0, raster.wj0), j1 = std::min(prim.j1, raster.wj1);
-  // Row j's pixels: the primitive's bounds within the window.
-  auto rowLo = [&](int j) { return std::max(prim.i0, raster.win_lo[static_cast<size_t>(j)]); };
-  auto rowHi = [&](int j) { return std::min(prim.i1, raster.win_hi[static_cast<size_t>(j)]); };
-  // Small primitives (mesh triangles near pixel size): the exact test per pixel is cheaper.
-  if ((prim.i1 - prim.i0 + 1) * (j1 - j0 + 1) <= 9) {
-    for (int j = j0; j <= j1; ++j) {
-      for (int i = rowLo(j); i <= rowHi(j); ++i) {
-        const double x = volume.centreX(i), y = volume.centreX(j);
-        if (!insideEdges(prim, x, y)) continue;
-        const double z = prim.z.at(x, y);
-        raster.depth.note(z, h);
-        if (!(std::abs(z) <= h)) continue;
-        raster.cover(j, i, i);
-        const size_t idx = static_cast<size_t>(j * r + i);
-        const float k = sign * static_cast<float>(z);
-        if (k > raster.key[idx]) {
-          raster.key[idx] = k;
-          raster.primitive[idx] = id;
-        }
+  for (int j = j0; j <= j1; ++j) {
+    for (int i = rowLo(prim, raster, j); i <= rowHi(prim, raster, j); ++i) {
+      const double x = volume.centreX(i), y = volume.centreX(j);
+      if (!insideEdges(prim, x, y)) continue;
+      const double z = prim.z.at(x, y);
+      raster.depth.note(z, h);
+      if (!(std::abs(z) <= h)) continue;
+      raster.cover(j, i, i);
+      const size_t idx = static_cast<size_t>(j * r + i);
+      const float k = sign * static_cast<float>(z);
+      if (k > raster.key[idx]) {
+        raster.key[idx] = k;
+        raster.primitive[idx] = id;
       }
     }
+  }
+}
+
+// Narrows row j's span [lo, hi] (at y, depth zr + dx x) to the pixels inside the cutting
+// constraints: the depth clip and every cutting edge bound x from one side or both, then the
+// exact test trims the conservative ends. Notes the row's depth clip decisions.
+[[gnu::always_inline]] inline void clipRow(const Volume& volume, const Planar& prim,
+                                           const Cuts& cuts, const std::array<EdgeBound, 4>& bounds,
+                                           int j, double y, double zr, int& lo, int& hi,
+                                           DepthMargins& depth) {
+  const double h = volume.half_depth;
+  if (cuts.depth && lo <= hi) {
+    noteRow(volume, zr, prim.z.dx, h, lo, hi, depth);
+    clipSpan(volume, prim.z.dx, -h - zr, h - zr, lo, hi);
+  }
+  for (int k = 0; k < cuts.edge_count && lo <= hi; ++k) {
+    const auto edge = static_cast<size_t>(cuts.edges[static_cast<size_t>(k)]);
+    clipEdge(bounds[static_cast<size_t>(k)], prim.edges[edge], y, j, volume.resolution, lo, hi);
+  }
+  // Trim the conservative ends with the exact test.
+  if (cuts.depth || cuts.edge_count > 0) {
+    while (lo <= hi && !insideCuts(prim, cuts, h, volume.centreX(lo), y)) ++lo;
+    while (lo <= hi && !insideCuts(prim, cuts, h, volume.centreX(hi), y)) --hi;
+  }
+}
+
+// Inside row j's span lo..hi: keep the fragment nearest the other body.
+[[gnu::always_inline]] inline void fillRow(const Volume& volume, const Planar& prim, int32_t id,
+                                           int j, double zr, int lo, int hi,
+                                           SurfaceRaster& raster) {
+  const int r = volume.resolution;
+  const float sign = raster.side == Side::B ? 1.0f : -1.0f;
+  float* key = raster.key.data() + static_cast<size_t>(j * r);
+  int32_t* primitive = raster.primitive.data() + static_cast<size_t>(j * r);
+  const double step = prim.z.dx * volume.pixel;
+  double z = zr + prim.z.dx * volume.centreX(lo);
+  for (int i = lo; i <= hi; ++i, z += step) {
+    const float k = sign * static_cast<float>(z);
+    if (k > key[i]) {
+      key[i] = k;
+      primitive[i] = id;
+    }
+  }
+}
+
+[[gnu::always_inline]] inline void rasterisePlanarBody(const Volume& volume, const Planar& prim,
+                                                       int32_t id, SurfaceRaster& raster) {
+  const int j0 = std::max(prim.j0, raster.wj0), j1 = std::min(prim.j1, raster.wj1);
+  // Small primitives: the exact test per pixel is cheaper than setting up the rows.
+  if ((prim.i1 - prim.i0 + 1) * (j1 - j0 + 1) <= 9) {
+    rasteriseSmallPlanar(volume, prim, id, j0, j1, raster);
     return;
   }
   if (j0 > j1) return;
+  // The constraints that cut the pixel box, and each cutting edge's crossing per row.
   const Cuts cuts = cutsWithin(volume, prim, j0, j1);
-  if (!cuts.depth) raster.depth.noteRange(cuts.z_least, cuts.z_most, h);
+  if (!cuts.depth) raster.depth.noteRange(cuts.z_least, cuts.z_most, volume.half_depth);
   std::array<EdgeBound, 4> bounds;
   for (int k = 0; k < cuts.edge_count; ++k) {
     const auto edge = static_cast<size_t>(cuts.edges[static_cast<size_t>(k)]);
     bounds[static_cast<size_t>(k)] = edgeBound(volume, prim.edges[edge]);
   }
+  // Each row: its span within the constraints, covered and filled.
   for (int j = j0; j <= j1; ++j) {
     const double y = volume.centreX(j);
-    // The row's span: the depth clip and every cutting edge bound x from one side or both.
-    int lo = rowLo(j), hi = rowHi(j);
+    int lo = rowLo(prim, raster, j), hi = rowHi(prim, raster, j);
     const double zr = prim.z.c + prim.z.dy * y;
-    if (cuts.depth && lo <= hi) {
-      noteRow(volume, zr, prim.z.dx, h, lo, hi, raster.depth);
-      clipSpan(volume, prim.z.dx, -h - zr, h - zr, lo, hi);
-    }
-    for (int k = 0; k < cuts.edge_count && lo <= hi; ++k) {
-      const auto edge = static_cast<size_t>(cuts.edges[static_cast<size_t>(k)]);
-      clipEdge(bounds[static_cast<size_t>(k)], prim.edges[edge], y, j, r, lo, hi);
-    }
-    // Trim the conservative ends with the exact test.
-    if (cuts.depth || cuts.edge_count > 0) {
-      while (lo <= hi && !insideCuts(prim, cuts, h, volume.centreX(lo), y)) ++lo;
-      while (lo <= hi && !insideCuts(prim, cuts, h, volume.centreX(hi), y)) --hi;
-    }
+    clipRow(volume, prim, cuts, bounds, j, y, zr, lo, hi, raster.depth);
     if (lo > hi) continue;
     raster.cover(j, lo, hi);
-    // Inside the span: keep the fragment nearest the other body.
-    float* key = raster.key.data() + static_cast<size_t>(j * r);
-    int32_t* primitive = raster.primitive.data() + static_cast<size_t>(j * r);
-    const double step = prim.z.dx * volume.pixel;
-    double z = zr + prim.z.dx * volume.centreX(lo);
-    for (int i = lo; i <= hi; ++i, z += step) {
-      const float k = sign * static_cast<float>(z);
-      if (k > key[i]) {
-        key[i] = k;
-        primitive[i] = id;
-      }
-    }
+    fillRow(volume, prim, id, j, zr, lo, hi, raster);
   }
 }
 
@@ -472,7 +523,7 @@ ASPERITY_TARGET_AVX2 void rasterisePlanarAvx2(const Volume& volume, const Planar
 
 void rasterisePlanar(const Volume& volume, const Planar& prim, int32_t id, SurfaceRaster& raster) {
 #if ASPERITY_AVX2_COPIES
-  if (simd::avx2()) return rasterisePlanarAvx2(volume, prim, id, raster);
+  if (simd::avx2(volume.simd)) return rasterisePlanarAvx2(volume, prim, id, raster);
 #endif
   rasterisePlanarBody(volume, prim, id, raster);
 }

@@ -19,6 +19,7 @@
 
 #include "asperity/friction/fragment_model.hpp"
 #include "asperity/geometry/shape.hpp"
+#include "asperity/math/simd_copy.hpp"
 #include "asperity/math/types.hpp"
 
 namespace asperity::patch {
@@ -31,6 +32,8 @@ struct Volume {
   double half_depth = 1e-4;      // (|phi| + 0.01 w) / 2 (m)
   int resolution = 16;           // R
   double pixel = 0.02 / 16;      // w / R
+  // Which compiled copy of the rasterising and shading loops runs (the sampler's option).
+  SimdCopy simd = SimdCopy::Auto;
 
   double centreX(int i) const { return -0.5 * width + (i + 0.5) * pixel; }
   // Packs pixel (i, j) for the fragment lists (i, j < 2^16).

@@ -283,7 +283,7 @@ ASPERITY_TARGET_AVX2 void shadeRunAvx2(const Volume& volume, const Planar& p, Si
 void shadeRun(const Volume& volume, const Planar& p, Side side, float mu_max,
               std::span<const uint32_t> pixels, size_t k0, size_t k1, float* gx, float* gy) {
 #if ASPERITY_AVX2_COPIES
-  if (simd::avx2()) return shadeRunAvx2(volume, p, side, mu_max, pixels, k0, k1, gx, gy);
+  if (simd::avx2(volume.simd)) return shadeRunAvx2(volume, p, side, mu_max, pixels, k0, k1, gx, gy);
 #endif
   shadeRunBody(volume, p, side, mu_max, pixels, k0, k1, gx, gy);
 }

@@ -2,20 +2,19 @@
 #include "sampler/patch_triangles.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "asperity/error.hpp"
 #include "geometry/shape_mesh_internal.hpp"
+#include "sampler/patch_faces.hpp"
 
 namespace asperity::patch {
 
 namespace {
 
-struct Corner {
-  Vec3 p;  // contact frame
-  double u = 0.0, v = 0.0;
-  Vec3 t, b, n;  // contact frame
-};
+// A corner of a face (patch_faces.hpp): position, uv and frame in the contact frame.
+using Corner = FaceCorner;
 
 PatchVertex toVertex(const Corner& c, double du, double dv) {
   PatchVertex v{};
@@ -132,45 +131,28 @@ void emit(const Volume& volume, const Corner& a, const Corner& b, const Corner& 
   }
 }
 
-bool facesOther(Side side, double normal_z) {
-  return side == Side::B ? normal_z > 0.0 : normal_z < 0.0;
-}
-
-void boxTriangles(const Volume& volume, const Shape& shape, const Mat3& m, const Vec3& o, Side side,
+void boxTriangles(const Volume& volume, const Shape& shape, const Placement& pl, Side side,
                   std::vector<PatchVertex>& out) {
   const double scale = detail::textureScale(shape);
-  const Vec3 h = shape.half_extents;
   // Each front-facing face as two triangles (corners counter-clockwise seen from outside).
-  for (int face = 0; face < 6; ++face) {
-    const SurfaceFrame f = boxFaceFrame(face);
-    const Vec3 nc = m * f.n;
-    if (!facesOther(side, nc.z())) continue;
-    const SurfaceFrame tex = rotateTexture(f, shape.surface.texture_rotation);
-    const Vec3 centre = f.n.cwiseProduct(h), et = f.t.cwiseProduct(h), eb = f.b.cwiseProduct(h);
-    static constexpr double su[4] = {-1, 1, 1, -1}, sv[4] = {-1, -1, 1, 1};
-    Corner q[4];
-    for (int k = 0; k < 4; ++k) {
-      const Vec3 p = centre + su[k] * et + sv[k] * eb;
-      q[k] = {m * p + o, scale * p.dot(tex.t), scale * p.dot(tex.b), m * tex.t, m * tex.b, nc};
-    }
+  std::array<BoxFace, 6> faces;
+  const int count = facingBoxFaces(shape, pl, side, faces);
+  for (int f = 0; f < count; ++f) {
+    const std::array<Corner, 4> q = boxFaceCorners(shape, pl, faces[static_cast<size_t>(f)], scale);
     // The quad's four sides are tested exactly; its diagonal is left to the rasteriser.
     emit(volume, q[0], q[1], q[2], 0b011u, out);
     emit(volume, q[0], q[2], q[3], 0b110u, out);
   }
 }
 
-void planeTriangles(const Volume& volume, const Shape& shape, const Mat3& m, const Vec3& o,
-                    Side side, std::vector<PatchVertex>& out) {
-  const double len = shape.plane_normal.norm();
-  if (!(len > 0.0)) throw Error("plane shape: plane_normal is zero");
-  const Vec3 nl = shape.plane_normal / len;
-  const Vec3 nc = m * nl;
-  if (!facesOther(side, nc.z()) || std::abs(nc.z()) < 1e-9) return;
+void planeTriangles(const Volume& volume, const Shape& shape, const Placement& pl, Side side,
+                    std::vector<PatchVertex>& out) {
+  FacingPlane plane;
+  if (!facingPlane(shape, pl, side, plane)) return;
   // The plane over the footprint (one pixel wider on each side), uv through the shape frame.
-  const SurfaceFrame tex = rotateTexture(detail::planeFrame(nl), shape.surface.texture_rotation);
-  const double scale = detail::textureScale(shape);
-  const Vec3 p0 = m * (shape.plane_offset / len * nl) + o;
-  const Mat3 to_local = m.transpose();
+  const Vec3& nc = plane.normal;
+  const Vec3& p0 = plane.point;
+  const Mat3 to_local = pl.m.transpose();
   const double half = 0.5 * volume.width + volume.pixel;
   Corner q[4];
   static constexpr double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
@@ -178,8 +160,13 @@ void planeTriangles(const Volume& volume, const Shape& shape, const Mat3& m, con
     const double x = sx[k] * half, y = sy[k] * half;
     const double z = p0.z() - (nc.x() * (x - p0.x()) + nc.y() * (y - p0.y())) / nc.z();
     const Vec3 pc(x, y, z);
-    const Vec3 pl = to_local * (pc - o);
-    q[k] = {pc, scale * pl.dot(tex.t), scale * pl.dot(tex.b), m * tex.t, m * tex.b, nc};
+    const Vec3 local = to_local * (pc - pl.o);
+    q[k] = {pc,
+            plane.scale * local.dot(plane.texture.t),
+            plane.scale * local.dot(plane.texture.b),
+            plane.t,
+            plane.b,
+            nc};
   }
   // Counter-clockwise seen from +n; reversed for A (which faces -n).
   // The plane covers the whole footprint: no edge to test.
@@ -192,36 +179,15 @@ void planeTriangles(const Volume& volume, const Shape& shape, const Mat3& m, con
   }
 }
 
-void meshTriangles(const Volume& volume, const Shape& shape, const Mat3& m, const Vec3& o,
-                   Side side, MeshCache& meshes, GeometryScratch& scratch,
-                   std::vector<PatchVertex>& out) {
+void meshTriangles(const Volume& volume, const Shape& shape, const Placement& pl, Side side,
+                   MeshCache& meshes, GeometryScratch& scratch, std::vector<PatchVertex>& out) {
   const CachedMesh& cached = meshes.get(shape);
-  const ShapeMesh& mesh = cached.mesh;
   // The volume's box in the shape frame selects candidate triangles.
-  const Mat3 to_local = m.transpose();
-  Aabb box;
-  for (int c = 0; c < 8; ++c) {
-    const Vec3 corner(c & 1 ? 0.5 * volume.width : -0.5 * volume.width,
-                      c & 2 ? 0.5 * volume.width : -0.5 * volume.width,
-                      c & 4 ? volume.half_depth : -volume.half_depth);
-    box.grow(Vec3f((to_local * (corner - o)).cast<float>()));
-  }
   scratch.triangles.clear();
-  cached.bvh.query(box, scratch.triangles);
+  cached.bvh.query(volumeBoxInShape(volume, pl), scratch.triangles);
   for (int index : scratch.triangles) {
-    const auto& tri = mesh.triangles[static_cast<size_t>(index)];
-    Corner c[3];
-    for (int k = 0; k < 3; ++k) {
-      const auto vi = static_cast<size_t>(tri[static_cast<size_t>(k)]);
-      c[k] = {m * mesh.positions[vi].cast<double>() + o,
-              mesh.uvs[vi].x(),
-              mesh.uvs[vi].y(),
-              m * mesh.tangents[vi].cast<double>(),
-              m * mesh.bitangents[vi].cast<double>(),
-              m * mesh.normals[vi].cast<double>()};
-    }
-    const Vec3 e1 = c[1].p - c[0].p, e2 = c[2].p - c[0].p;
-    if (!facesOther(side, e1.x() * e2.y() - e1.y() * e2.x())) continue;
+    const std::array<Corner, 3> c = meshTriangleCorners(cached.mesh, index, pl);
+    if (!triangleFacesOther(side, c)) continue;
     // Left to the rasteriser: mesh triangles (tessellations included) are mostly narrower
     // than a pixel.
     emit(volume, c[0], c[1], c[2], 0u, out);
@@ -232,22 +198,20 @@ void meshTriangles(const Volume& volume, const Shape& shape, const Mat3& m, cons
 
 void collectTriangles(const Volume& volume, const Shape& shape, const Transform& pose, Side side,
                       MeshCache& meshes, GeometryScratch& scratch, std::vector<PatchVertex>& out) {
-  const Mat3 at = volume.axes.transpose();
-  const Mat3 m = at * pose.rotation.toRotationMatrix();
-  const Vec3 o = at * (pose.position - volume.origin);
+  const Placement pl = place(volume, pose);
   switch (shape.type) {
     case ShapeType::Box:
-      boxTriangles(volume, shape, m, o, side, out);
+      boxTriangles(volume, shape, pl, side, out);
       break;
     case ShapeType::Plane:
-      planeTriangles(volume, shape, m, o, side, out);
+      planeTriangles(volume, shape, pl, side, out);
       break;
     case ShapeType::Sphere:
     case ShapeType::Capsule:
     case ShapeType::Cylinder:
     case ShapeType::ConvexHull:
     case ShapeType::TriangleMesh:
-      meshTriangles(volume, shape, m, o, side, meshes, scratch, out);
+      meshTriangles(volume, shape, pl, side, meshes, scratch, out);
       break;
   }
 }

@@ -101,6 +101,31 @@ Surface parseSurface(JsonReader r, const std::string& base_dir) {
   return s;
 }
 
+// A shape's "surface": an object, or the name of an entry of "materials" (a copy of that entry).
+// `names_color` tells whether it gives a base colour.
+Surface shapeSurface(JsonReader& r, const SceneDesc& scene, bool& names_color) {
+  const nlohmann::json* v = r.has("surface") ? &r.value().at("surface") : nullptr;
+  if (v && !v->is_string() && !v->is_object())
+    r.failAt("surface", "must be an object or the name of a material, got " + describeValue(*v));
+  if (!v || v->is_object()) {
+    const JsonReader object = r.object("surface");
+    names_color = object.value().contains("base_color");
+    return parseSurface(object, scene.base_dir);
+  }
+  // A name: one of the table's, listed when it is not.
+  const std::string name = v->get<std::string>();
+  const auto found = scene.materials.find(name);
+  if (found == scene.materials.end()) {
+    std::vector<std::string> known;
+    for (const auto& entry : scene.materials) known.push_back(entry.first);
+    r.failAt("surface", "unknown material \"" + name + "\" (" +
+                            (known.empty() ? "the scene has no \"materials\"" : oneOf(known)) +
+                            ")");
+  }
+  names_color = found->second.names_base_color;
+  return found->second.surface;
+}
+
 // The mesh of a convex hull or triangle mesh shape: asset file, scale, simplification target,
 // node.
 SceneMesh parseMeshSource(JsonReader& r, const std::string& key, const std::string& base_dir) {
@@ -123,6 +148,25 @@ std::shared_ptr<const TriangleMeshData> parsePoints(JsonReader& r) {
   return mesh;
 }
 
+// Where a hull's or mesh's triangles come from, the one statement of the rule: every shape that
+// reads an asset names it with "file" (a hull's old "mesh" is still read, deprecated); a convex
+// hull takes exactly one of "file" and inline "points".
+void parseTriangles(JsonReader& r, Shape& s, SceneDesc& scene, size_t body, size_t shape) {
+  const bool hull = s.type == ShapeType::ConvexHull;
+  const std::string file_key = hull ? r.renamed("file", "mesh") : "file";
+  if (hull && r.has("points") == r.has(file_key))
+    r.fail("a convex hull needs exactly one of \"points\" and \"" + file_key + "\", got " +
+           (r.has("points") ? "both" : "neither"));
+  if (hull && r.has("points")) {
+    s.mesh = parsePoints(r);
+    return;
+  }
+  SceneMesh m = parseMeshSource(r, file_key, scene.base_dir);
+  m.body = body;
+  m.shape = shape;
+  scene.meshes.push_back(m);
+}
+
 // The fields that only one shape type has.
 void parseGeometry(JsonReader& r, Shape& s, SceneDesc& scene, size_t body, size_t shape) {
   const Range length = Range::positive(kHuge);
@@ -143,22 +187,9 @@ void parseGeometry(JsonReader& r, Shape& s, SceneDesc& scene, size_t body, size_
       s.plane_offset = r.number("offset", s.plane_offset, Range::closed(-kHuge, kHuge));
       break;
     case ShapeType::ConvexHull:
-    case ShapeType::TriangleMesh: {
-      // A hull from inline points or an OBJ file; a triangle mesh from an OBJ file.
-      const bool hull = s.type == ShapeType::ConvexHull;
-      const std::string key = hull ? "mesh" : "file";
-      if (hull && r.has("points") == r.has("mesh"))
-        r.fail("a convex hull needs either \"points\" or \"mesh\"");
-      if (hull && r.has("points")) {
-        s.mesh = parsePoints(r);
-        break;
-      }
-      SceneMesh m = parseMeshSource(r, key, scene.base_dir);
-      m.body = body;
-      m.shape = shape;
-      scene.meshes.push_back(m);
+    case ShapeType::TriangleMesh:
+      parseTriangles(r, s, scene, body, shape);
       break;
-    }
   }
 }
 
@@ -170,13 +201,12 @@ Shape parseShape(JsonReader r, SceneDesc& scene, size_t body, size_t shape) {
   s.local.rotation = orientation(r);
   s.density = r.number("density", s.density, Range::positive(1e6));
   parseGeometry(r, s, scene, body, shape);
+  bool names_color = false;
+  s.surface = shapeSurface(r, scene, names_color);
   // An asset's own base colour shows unless the surface names one.
-  const bool names_color = r.has("surface") && r.value().at("surface").is_object() &&
-                           r.value().at("surface").contains("base_color");
   if (!scene.meshes.empty() && scene.meshes.back().body == body &&
       scene.meshes.back().shape == shape)
     scene.meshes.back().asset_base_color = !names_color;
-  s.surface = parseSurface(r.object("surface"), scene.base_dir);
   r.finish();
   return s;
 }
@@ -206,6 +236,21 @@ BodyDesc parseBody(JsonReader r, SceneDesc& scene, size_t index) {
 }
 
 }  // namespace
+
+void parseMaterials(JsonReader& root, SceneDesc& scene) {
+  JsonReader table = root.object("materials");
+  for (const auto& entry : table.value().items()) {
+    const std::string& name = entry.key();
+    if (name.empty()) table.failAt(name, "a material needs a non-empty name");
+    // Each entry is a surface object; the shapes that name it keep the name for saving.
+    const JsonReader surface = table.object(name);
+    SceneMaterial& m = scene.materials[name];
+    m.names_base_color = surface.value().contains("base_color");
+    m.surface = parseSurface(surface, scene.base_dir);
+    m.surface.source.material = name;
+  }
+  table.finish();
+}
 
 void parseBodies(JsonReader& root, SceneDesc& scene) {
   std::set<std::string> names;

@@ -4,6 +4,7 @@
 #include <mutex>
 
 #include "asperity/error.hpp"
+#include "asperity/geometry/surface.hpp"
 #include "asperity/scene/scene.hpp"
 #include "asperity/texture/generators.hpp"
 #include "asperity/texture/png_io.hpp"
@@ -36,7 +37,8 @@ GeneratorSpec resolveGeneratorPaths(GeneratorSpec spec, const std::string& base_
 
 }  // namespace
 
-std::shared_ptr<const NormalMap> ResourceCache::normalMap(const Surface& surface) {
+std::shared_ptr<const NormalMap> ResourceCache::normalMap(const Surface& surface,
+                                                          Diagnostics& diagnostics) {
   // Files are keyed by their resolved path and green convention, generators by their spec.
   std::string key;
   if (!surface.source.normal_map_file.empty())
@@ -53,7 +55,7 @@ std::shared_ptr<const NormalMap> ResourceCache::normalMap(const Surface& surface
   if (!resolved.normal_map_file.empty())
     resolved.normal_map_file = resolvePath(base_dir_, resolved.normal_map_file);
   resolved.generator = resolveGeneratorPaths(resolved.generator, base_dir_);
-  slot = loadNormalMap(resolved);
+  slot = loadNormalMap(resolved, diagnostics);
   return slot;
 }
 
@@ -66,12 +68,18 @@ std::shared_ptr<const GainMask> ResourceCache::mask(const std::string& file) {
 }
 
 std::shared_ptr<const ImportedAsset> ResourceCache::asset(const SceneMesh& source,
-                                                          GreenConvention green) {
+                                                          GreenConvention green,
+                                                          Diagnostics& diagnostics) {
   const std::string path = resolvePath(base_dir_, source.file);
   auto& slot =
       assets_[path + ":" + formatNumber(source.scale) + ":" + std::to_string(source.simplify) +
               ":" + source.node + (green == GreenConvention::DirectX ? ":directx" : ":opengl")];
-  if (!slot) slot = loadSceneMesh(path, source, green);
+  if (slot) return slot;
+  // The asset's normal map is decoded once: its invalid texels are reported then (SPEC 10).
+  slot = loadSceneMesh(path, source, green);
+  const AssetMaterial& material = slot->material;
+  warnInvalidTexels(path + ": normal map " + material.normal_map_name, material.normal_stats,
+                    diagnostics);
   return slot;
 }
 
@@ -101,7 +109,7 @@ auto withContext(const SceneDesc& scene, const std::string& pointer, F&& f) {
 
 // A body's asset meshes; their materials' normal maps fill surfaces that name none.
 BodyDesc resolveMeshes(const SceneDesc& scene, size_t index, scene::ResourceCache& cache,
-                       BodyDesc desc) {
+                       Diagnostics& diagnostics, BodyDesc desc) {
   const std::string body_ptr = "/bodies/" + std::to_string(index);
   for (const SceneMesh& m : scene.meshes) {
     if (m.body != index) continue;
@@ -109,11 +117,9 @@ BodyDesc resolveMeshes(const SceneDesc& scene, size_t index, scene::ResourceCach
       throw Error("scene mesh refers to shape " + std::to_string(m.shape) + " of body \"" +
                   desc.name + "\", which has " + std::to_string(desc.shapes.size()));
     Shape& shape = desc.shapes[m.shape];
-    const bool hull = shape.type == ShapeType::ConvexHull;
-    const std::string ptr =
-        body_ptr + "/shapes/" + std::to_string(m.shape) + (hull ? "/mesh" : "/file");
-    const auto asset =
-        withContext(scene, ptr, [&] { return cache.asset(m, shape.surface.source.green); });
+    const std::string ptr = body_ptr + "/shapes/" + std::to_string(m.shape) + "/file";
+    const auto asset = withContext(
+        scene, ptr, [&] { return cache.asset(m, shape.surface.source.green, diagnostics); });
     shape.mesh = asset->mesh;
     shape.display_mesh = asset->display_mesh;
     // The asset's own normal map when the surface names none (SPEC 10), and its base colour.
@@ -129,18 +135,35 @@ BodyDesc resolveMeshes(const SceneDesc& scene, size_t index, scene::ResourceCach
 }
 
 // Resolves a body's surfaces (normal maps and masks) and its asset meshes.
-BodyDesc resolveBody(const SceneDesc& scene, size_t index, scene::ResourceCache& cache) {
+BodyDesc resolveBody(const SceneDesc& scene, size_t index, scene::ResourceCache& cache,
+                     Diagnostics& diagnostics) {
   BodyDesc desc = scene.bodies[index];
   const std::string body_ptr = "/bodies/" + std::to_string(index);
   for (size_t i = 0; i < desc.shapes.size(); ++i) {
     Surface& s = desc.shapes[i].surface;
     const std::string ptr = body_ptr + "/shapes/" + std::to_string(i) + "/surface";
     if (!s.normal_map)
-      s.normal_map = withContext(scene, ptr + "/normal_map", [&] { return cache.normalMap(s); });
+      s.normal_map =
+          withContext(scene, ptr + "/normal_map", [&] { return cache.normalMap(s, diagnostics); });
     if (!s.mask)
       s.mask = withContext(scene, ptr + "/mask", [&] { return cache.mask(s.source.mask_file); });
   }
-  return resolveMeshes(scene, index, cache, std::move(desc));
+  return resolveMeshes(scene, index, cache, diagnostics, std::move(desc));
+}
+
+// Every body's description with its surfaces and meshes resolved, from the cache of the scene's
+// folder; one instantiation resolves at a time per resources.
+std::vector<BodyDesc> resolveBodies(const SceneDesc& scene, const InstantiateOptions& options,
+                                    Diagnostics& diagnostics) {
+  const auto resources = options.resources ? options.resources : std::make_shared<SceneResources>();
+  auto& shared = scene::ResourcesAccess::impl(*resources);
+  const std::lock_guard lock(shared.mutex);
+  scene::ResourceCache& cache =
+      shared.caches.try_emplace(scene.base_dir, scene.base_dir).first->second;
+  std::vector<BodyDesc> resolved;
+  for (size_t i = 0; i < scene.bodies.size(); ++i)
+    resolved.push_back(resolveBody(scene, i, cache, diagnostics));
+  return resolved;
 }
 
 // The id of a named body; the scene reader has checked the name, code-built scenes may not.
@@ -150,52 +173,48 @@ BodyId bodyId(const World& world, const std::string& name, const std::string& wh
   return id;
 }
 
-}  // namespace
-
-std::unique_ptr<World> instantiate(const SceneDesc& scene, const InstantiateOptions& options) {
-  auto world = std::make_unique<World>(scene.settings);
-  world->setFrictionProvider(withContext(scene, "/settings/sampler",
-                                         [&] { return options.providers.make(scene.sampler); }));
-  // Bodies, with equal surfaces and meshes sharing one resolved copy (across worlds too when
-  // the caller shares its resources); one instantiation resolves at a time per resources.
-  const auto resources = options.resources ? options.resources : std::make_shared<SceneResources>();
-  std::vector<BodyDesc> resolved;
-  {
-    SceneResources::Impl& shared = resources->impl();
-    const std::lock_guard lock(shared.mutex);
-    scene::ResourceCache& cache =
-        shared.caches.try_emplace(scene.base_dir, scene.base_dir).first->second;
-    for (size_t i = 0; i < scene.bodies.size(); ++i)
-      resolved.push_back(resolveBody(scene, i, cache));
-  }
-  for (size_t i = 0; i < resolved.size(); ++i)
-    withContext(scene, "/bodies/" + std::to_string(i),
-                [&] { return world->createBody(resolved[i]); });
-  // Joints, springs and loads, with names turned into ids.
+// Joints, springs and loads, with body names turned into ids.
+void createConnections(const SceneDesc& scene, World& world) {
   for (size_t i = 0; i < scene.joints.size(); ++i) {
-    const std::string ptr = "/joints/" + std::to_string(i);
     JointDesc d = scene.joints[i].desc;
-    withContext(scene, ptr, [&] {
-      d.body_a = bodyId(*world, scene.joints[i].body_a, "body_a");
-      d.body_b = bodyId(*world, scene.joints[i].body_b, "body_b");
-      return world->createJoint(d);
+    withContext(scene, "/joints/" + std::to_string(i), [&] {
+      d.body_a = bodyId(world, scene.joints[i].body_a, "body_a");
+      d.body_b = bodyId(world, scene.joints[i].body_b, "body_b");
+      return world.createJoint(d);
     });
   }
   for (size_t i = 0; i < scene.springs.size(); ++i) {
     SpringDesc d = scene.springs[i].desc;
     withContext(scene, "/springs/" + std::to_string(i), [&] {
-      d.body = bodyId(*world, scene.springs[i].body, "body");
-      return world->addSpring(d);
+      d.body = bodyId(world, scene.springs[i].body, "body");
+      return world.addSpring(d);
     });
   }
   for (size_t i = 0; i < scene.loads.size(); ++i) {
     LoadDesc d = scene.loads[i].desc;
     withContext(scene, "/loads/" + std::to_string(i), [&] {
-      d.body = bodyId(*world, scene.loads[i].body, "body");
-      world->addLoad(d);
-      return 0;
+      d.body = bodyId(world, scene.loads[i].body, "body");
+      return world.addLoad(d);
     });
   }
+}
+
+}  // namespace
+
+std::unique_ptr<World> instantiate(const SceneDesc& scene, const InstantiateOptions& options) {
+  auto world = std::make_unique<World>(scene.settings);
+  world->setFrictionProvider(withContext(scene, "/settings/friction_provider", [&] {
+    return options.providers.make(scene.friction_provider);
+  }));
+  // What loading the scene found comes first among the world's warnings.
+  for (const std::string& warning : scene.warnings) world->diagnostics().warn(warning);
+  // Bodies, with equal surfaces and meshes sharing one resolved copy (across worlds too when
+  // the caller shares its resources).
+  const std::vector<BodyDesc> resolved = resolveBodies(scene, options, world->diagnostics());
+  for (size_t i = 0; i < resolved.size(); ++i)
+    withContext(scene, "/bodies/" + std::to_string(i),
+                [&] { return world->createBody(resolved[i]); });
+  createConnections(scene, *world);
   return world;
 }
 

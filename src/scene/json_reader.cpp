@@ -211,6 +211,23 @@ void JsonReader::failAt(const std::string& key, const std::string& what) const {
   throw Error(file_ + ": " + childPointer(key) + ": " + what);
 }
 
+void JsonReader::warnAt(const std::string& key, const std::string& what) const {
+  if (warnings_) warnings_->push_back(file_ + ": " + childPointer(key) + ": " + what);
+}
+
+std::string JsonReader::renamed(const std::string& current, const std::string& deprecated) {
+  // The old name is looked at without marking it known, so finish() lists only the new one.
+  requireObject();
+  known_.insert(current);
+  if (!value_.contains(deprecated)) return current;
+  if (has(current))
+    failAt(deprecated, "deprecated name of \"" + current + "\", which is also given: keep only \"" +
+                           current + "\"");
+  known_.insert(deprecated);
+  warnAt(deprecated, "deprecated, use \"" + current + "\"");
+  return deprecated;
+}
+
 void JsonReader::requireObject() const {
   if (!value_.is_object()) fail("must be an object, got " + describeValue(value_));
 }
@@ -339,6 +356,7 @@ JsonReader JsonReader::object(const std::string& key) {
   static const nlohmann::json kEmpty = nlohmann::json::object();
   const nlohmann::json* v = member(key);
   JsonReader child(v ? *v : kEmpty, file_, childPointer(key));
+  child.warnings_ = warnings_;
   child.requireObject();
   return child;
 }
@@ -348,8 +366,10 @@ std::vector<JsonReader> JsonReader::elements(const std::string& key) {
   const nlohmann::json* v = member(key);
   if (v == nullptr) return out;
   if (!v->is_array()) failAt(key, "must be an array, got " + describeValue(*v));
-  for (size_t i = 0; i < v->size(); ++i)
+  for (size_t i = 0; i < v->size(); ++i) {
     out.emplace_back((*v)[i], file_, childPointer(key) + "/" + std::to_string(i));
+    out.back().warnings_ = warnings_;
+  }
   return out;
 }
 

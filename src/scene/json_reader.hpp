@@ -1,6 +1,7 @@
 // A path-tracking reader over parsed JSON for the scene loader. Every getter checks the value's
 // type and range, and every error is one line `file: /json/pointer: what is wrong`, with the
 // JSON pointer (RFC 6901) of the offending value. finish() rejects keys nobody asked for.
+// Renamed keys are still read under their old name, with a warning (renamed()).
 //
 //   JsonReader r(json, "scenes/x.json");
 //   double dt = r.number("dt", 0.01, Range::leftOpen(0.0, 1.0));
@@ -67,6 +68,16 @@ class JsonReader {
   [[noreturn]] void fail(const std::string& what) const;
   [[noreturn]] void failAt(const std::string& key, const std::string& what) const;
 
+  // Where warnings go, for this reader and the readers it hands out; null (the default): dropped.
+  void setWarnings(std::vector<std::string>* warnings) { warnings_ = warnings; }
+  // Records the warning `file: pointer/key: what`.
+  void warnAt(const std::string& key, const std::string& what) const;
+  // The key under which a renamed member is given: `current`, or `deprecated` with the warning
+  // `file: /pointer/deprecated: deprecated, use "current"`; `current` when neither is present.
+  // Both at once is an error at the deprecated key. Only `current` counts as a known key in
+  // finish()'s list, unless the deprecated one is given.
+  std::string renamed(const std::string& current, const std::string& deprecated);
+
   // Object members. Each getter marks the key as known; an absent key gives the default.
   bool has(const std::string& key);
   double number(const std::string& key, double fallback, Range range = Range::any());
@@ -109,6 +120,7 @@ class JsonReader {
   std::string file_;
   std::string pointer_;
   std::set<std::string> known_;
+  std::vector<std::string>* warnings_ = nullptr;
 };
 
 // `one of "a", "b", "c"`.

@@ -25,6 +25,8 @@ std::string resolvePath(const std::string& base_dir, const std::string& file);
 double degreesFromRadians(double radians);
 double radiansFromDegrees(double degrees);
 
+// Parses the "materials" table (named surfaces), before the bodies that refer to it.
+void parseMaterials(JsonReader& root, SceneDesc& scene);
 // Parses the "bodies" array (shapes, surfaces, OBJ meshes), checking names are unique.
 void parseBodies(JsonReader& root, SceneDesc& scene);
 // Writes one body back (with its meshes from scene.meshes).

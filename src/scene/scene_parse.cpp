@@ -43,7 +43,7 @@ double degreesFromRadians(double radians) {
 
 namespace {
 
-// "settings": every WorldSettings field, plus the friction sampler's name.
+// "settings": every WorldSettings field, plus the friction provider's name.
 void parseSettings(JsonReader r, SceneDesc& scene) {
   WorldSettings& s = scene.settings;
   s.dt = r.number("dt", s.dt, Range::leftOpen(0.0, 1.0));
@@ -51,8 +51,10 @@ void parseSettings(JsonReader r, SceneDesc& scene) {
   s.substeps = r.integer("substeps", s.substeps, 1, 1000);
   s.threads = r.integer("threads", s.threads, 0, kMaxThreads);
   s.gravity = r.vec3("gravity", s.gravity, Range::closed(-kHuge, kHuge));
-  s.limit_surface = r.enumeration("friction", s.limit_surface, kLimitSurfaceNames);
-  s.frame_mode = r.enumeration("frame", s.frame_mode, kFrameModeNames);
+  // Keys named as the C++ fields; the old "friction" and "frame" are still read.
+  s.limit_surface =
+      r.enumeration(r.renamed("limit_surface", "friction"), s.limit_surface, kLimitSurfaceNames);
+  s.frame_mode = r.enumeration(r.renamed("frame_mode", "frame"), s.frame_mode, kFrameModeNames);
   s.world_axis = r.direction("world_axis", s.world_axis);
   s.fallback_axis = r.direction("fallback_axis", s.fallback_axis);
   s.auto_frame_iterations = r.integer("auto_frame_iterations", s.auto_frame_iterations, 0, 1000);
@@ -73,8 +75,11 @@ void parseSettings(JsonReader r, SceneDesc& scene) {
   f.patch_width = r.number("patch_width", f.patch_width, Range::positive(kHuge));
   f.patch_resolution = r.integer("patch_resolution", f.patch_resolution, 1, 1024);
   f.reuse_pixels = r.number("reuse_pixels", f.reuse_pixels, Range::nonNegative(kHuge));
-  scene.sampler = r.string("sampler", scene.sampler);
-  if (scene.sampler.empty()) r.failAt("sampler", "must be a sampler name, got \"\"");
+  // Any friction provider, sampler or not; the old "sampler" is still read.
+  const std::string provider = r.renamed("friction_provider", "sampler");
+  scene.friction_provider = r.string(provider, scene.friction_provider);
+  if (scene.friction_provider.empty())
+    r.failAt(provider, "must be a friction provider name, got \"\"");
   r.finish();
 }
 
@@ -131,7 +136,8 @@ SceneLoad parseLoad(JsonReader r, const std::set<std::string>& names) {
   l.body = bodyName(r, "body", names);
   d.kind = r.enumeration("kind", d.kind, kLoadKindNames);
   d.value = r.vec3("value", d.value, Range::closed(-1e12, 1e12));
-  d.local_point = r.vec3("point", d.local_point, Range::closed(-kHuge, kHuge));
+  d.local_point =
+      r.vec3(r.renamed("local_point", "point"), d.local_point, Range::closed(-kHuge, kHuge));
   d.start = r.number("start", d.start, Range::nonNegative(1e30));
   d.end = r.number("end", d.end, Range::closed(d.start, 1e30));
   r.finish();
@@ -160,8 +166,10 @@ SceneDesc parseScene(const nlohmann::json& json, const std::string& file_for_mes
   out.source_file = file_for_messages;
   out.base_dir = parentFolder(file_for_messages);
   JsonReader root(json, file_for_messages);
+  root.setWarnings(&out.warnings);
   root.requireObject();
   parseSettings(root.object("settings"), out);
+  parseMaterials(root, out);
   parseBodies(root, out);
   // Joints, springs and loads refer to bodies by name.
   std::set<std::string> names;

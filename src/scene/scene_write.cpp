@@ -71,17 +71,17 @@ const SceneMesh* meshSource(const SceneDesc& scene, size_t body, size_t shape) {
   return nullptr;
 }
 
-// Hulls and meshes: the OBJ file they came from, else a hull's points.
+// Hulls and meshes: the asset file they came from, else a hull's points.
 void meshToJson(const SceneDesc& scene, size_t body, size_t index, json& out) {
   const Shape& shape = scene.bodies[body].shapes[index];
   const bool hull = shape.type == ShapeType::ConvexHull;
   if (const SceneMesh* m = meshSource(scene, body, index)) {
-    out[hull ? "mesh" : "file"] = m->file;
+    out["file"] = m->file;
     out["scale"] = m->scale;
     out["simplify"] = m->simplify;
     if (!m->node.empty()) out["node"] = m->node;
   } else if (shape.mesh && !shape.mesh->source_file.empty()) {
-    out[hull ? "mesh" : "file"] = shape.mesh->source_file;
+    out["file"] = shape.mesh->source_file;
   } else if (hull && shape.mesh) {
     json points = json::array();
     for (const Vec3& p : shape.mesh->vertices) points.push_back(toJson(p));
@@ -121,6 +121,13 @@ json shapeToJson(const SceneDesc& scene, size_t body, size_t index) {
       break;
   }
   out["surface"] = surfaceToJson(s.surface);
+  // A surface that still equals the material it was read from is written as its name.
+  const auto material = scene.materials.find(s.surface.source.material);
+  if (material != scene.materials.end() &&
+      surfaceToJson(material->second.surface) == out["surface"]) {
+    out["surface"] = material->first;
+    return out;
+  }
   // A surface that showed its asset's base colour keeps doing so.
   const SceneMesh* m = meshSource(scene, body, index);
   if (m && m->asset_base_color) out["surface"].erase("base_color");
@@ -135,8 +142,8 @@ json settingsToJson(const SceneDesc& scene) {
           {"substeps", s.substeps},
           {"threads", s.threads},
           {"gravity", toJson(s.gravity)},
-          {"friction", enumName(s.limit_surface, kLimitSurfaceNames)},
-          {"frame", enumName(s.frame_mode, kFrameModeNames)},
+          {"limit_surface", enumName(s.limit_surface, kLimitSurfaceNames)},
+          {"frame_mode", enumName(s.frame_mode, kFrameModeNames)},
           {"world_axis", toJson(s.world_axis)},
           {"fallback_axis", toJson(s.fallback_axis)},
           {"auto_frame_iterations", s.auto_frame_iterations},
@@ -153,7 +160,17 @@ json settingsToJson(const SceneDesc& scene) {
           {"patch_width", f.patch_width},
           {"patch_resolution", f.patch_resolution},
           {"reuse_pixels", f.reuse_pixels},
-          {"sampler", scene.sampler}};
+          {"friction_provider", scene.friction_provider}};
+}
+
+// "materials": each entry as a surface, its base colour only when it gave one.
+json materialsToJson(const SceneDesc& scene) {
+  json out = json::object();
+  for (const auto& [name, material] : scene.materials) {
+    out[name] = surfaceToJson(material.surface);
+    if (!material.names_base_color) out[name].erase("base_color");
+  }
+  return out;
 }
 
 json jointToJson(const SceneJoint& j) {
@@ -192,7 +209,7 @@ json loadToJson(const SceneLoad& l) {
           {"body", l.body},
           {"kind", enumName(d.kind, kLoadKindNames)},
           {"value", toJson(d.value)},
-          {"point", toJson(d.local_point)},
+          {"local_point", toJson(d.local_point)},
           {"start", d.start},
           {"end", d.end}};
 }
@@ -203,6 +220,17 @@ void rebase(std::string& file, const std::filesystem::path& from, const std::fil
   file = (from / file).lexically_normal().lexically_proximate(to).string();
 }
 
+// A surface's files: its normal map, its mask and generator parameters that name files.
+void rebaseSurface(SurfaceSource& s, const std::filesystem::path& from,
+                   const std::filesystem::path& to) {
+  rebase(s.normal_map_file, from, to);
+  rebase(s.mask_file, from, to);
+  for (const GeneratorInfo& g : generatorCatalog())
+    for (const GeneratorParam& p : g.params)
+      if (g.name == s.generator.name && p.kind == "path" && s.generator.params.count(p.name))
+        rebase(s.generator.params[p.name], from, to);
+}
+
 // Every file name of the scene, made relative to `folder` instead of scene.base_dir.
 void rebaseScene(SceneDesc& scene, const std::string& folder) {
   namespace fs = std::filesystem;
@@ -211,19 +239,9 @@ void rebaseScene(SceneDesc& scene, const std::string& folder) {
   const fs::path to = fs::absolute(folder.empty() ? "." : folder).lexically_normal();
   scene.base_dir = folder;
   if (from == to) return;
-  for (BodyDesc& body : scene.bodies) {
-    for (Shape& shape : body.shapes) {
-      Surface& s = shape.surface;
-      rebase(s.source.normal_map_file, from, to);
-      rebase(s.source.mask_file, from, to);
-      // Generator parameters that name files (height maps).
-      for (const GeneratorInfo& g : generatorCatalog())
-        for (const GeneratorParam& p : g.params)
-          if (g.name == s.source.generator.name && p.kind == "path" &&
-              s.source.generator.params.count(p.name))
-            rebase(s.source.generator.params[p.name], from, to);
-    }
-  }
+  for (auto& entry : scene.materials) rebaseSurface(entry.second.surface.source, from, to);
+  for (BodyDesc& body : scene.bodies)
+    for (Shape& shape : body.shapes) rebaseSurface(shape.surface.source, from, to);
   for (SceneMesh& m : scene.meshes) rebase(m.file, from, to);
 }
 
@@ -262,6 +280,8 @@ nlohmann::json sceneToJson(const SceneDesc& scene) {
               {"joints", joints},
               {"springs", springs},
               {"loads", loads}};
+  // The materials table only when the scene has one.
+  if (!scene.materials.empty()) out["materials"] = materialsToJson(scene);
   // The camera only when the scene chose one.
   if (scene.camera)
     out["camera"] = {{"eye", toJson(scene.camera->eye)},

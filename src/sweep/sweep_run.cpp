@@ -6,6 +6,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
 #include <numeric>
 
 #include "asperity/error.hpp"
@@ -24,12 +26,13 @@ std::pair<int, size_t> resolveMeasure(const std::string& name,
   int k = 0;
   while (k < 4 && kind != kMeasureKinds[k]) ++k;
   if (colon == std::string::npos || k == 4)
-    throw Error("--measure '" + name +
-                "': expected KIND:BODY with KIND one of distance, speed, angle, height");
+    throw SweepError(SweepField::Measures, "'" + name + "'",
+                     "expected KIND:BODY with KIND one of distance, speed, angle, height");
   const std::string body = name.substr(colon + 1);
   for (size_t i = 0; i < bodies.size(); ++i)
     if (bodies[i] == body) return {k, i};
-  throw Error("--measure '" + name + "': the scene has no body named '" + body + "'");
+  throw SweepError(SweepField::Measures, "'" + name + "'",
+                   "the scene has no body named '" + body + "'");
 }
 
 // The value of one built-in measure from the start and end of a run.
@@ -53,24 +56,36 @@ void appendNumber(std::string& line, double x) {
   line.append(buffer, r.ptr);
 }
 
+// The scene's JSON text parsed; a parse error names the file.
+std::shared_ptr<const nlohmann::json> parseSceneText(const SweepDesc& desc) {
+  try {
+    return std::make_shared<const nlohmann::json>(nlohmann::json::parse(desc.scene_json));
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(desc.scene_file + ": not valid JSON: " + e.what());
+  }
+}
+
 }  // namespace
 
 Sweep::Sweep(SweepDesc desc) : desc_(std::move(desc)) {
   // Counts and time first, then every path against the unmodified scene.
   if (desc_.samples < 1 || desc_.samples > 100000000)
-    throw Error("--samples must be in 1..100000000, got " + std::to_string(desc_.samples));
+    throw SweepError(SweepField::Samples, "",
+                     "must be in 1..100000000, got " + std::to_string(desc_.samples));
   if (!std::isfinite(desc_.seconds) || desc_.seconds < 0.0)
-    throw Error("--seconds must be a finite number >= 0");
-  for (const Variation& v : desc_.vary) pointers_.push_back(expandPath(desc_.scene, v.path));
+    throw SweepError(SweepField::Seconds, "", "must be a finite number >= 0");
+  scene_ = parseSceneText(desc_);
+  for (const Variation& v : desc_.vary) pointers_.push_back(expandPath(*scene_, v.path));
   // The scene itself must load; its bodies name the pose columns and the measures.
-  const SceneDesc scene = parseScene(desc_.scene, desc_.scene_file);
+  const SceneDesc scene = parseScene(*scene_, desc_.scene_file);
   // Pool threads have no OpenGL context: only the core's samplers run in a sweep.
-  if (scene.sampler != "constant" && scene.sampler != "cone" && scene.sampler != "cpu")
-    throw Error(desc_.scene_file + ": sampler \"" + scene.sampler +
+  if (scene.friction_provider != "constant" && scene.friction_provider != "cone" &&
+      scene.friction_provider != "cpu")
+    throw Error(desc_.scene_file + ": sampler \"" + scene.friction_provider +
                 "\" cannot run in a sweep (available: constant, cone, cpu)");
   for (const BodyDesc& b : scene.bodies) body_names_.push_back(b.name);
   for (const std::string& m : desc_.measures) measures_.push_back(resolveMeasure(m, body_names_));
-  steps_ = stepsFor(desc_.seconds, scene.settings.dt, "--seconds");
+  steps_ = stepsFor(desc_.seconds, scene.settings.dt, "seconds");
 }
 
 SampleResult Sweep::run(int64_t index) const {
@@ -78,7 +93,7 @@ SampleResult Sweep::run(int64_t index) const {
   r.index = index;
   r.values = values(index);
   // The scene with this sample's values written at every matching pointer.
-  nlohmann::json json = desc_.scene;
+  nlohmann::json json = *scene_;
   for (size_t j = 0; j < pointers_.size(); ++j)
     for (const std::string& p : pointers_[j]) json[nlohmann::json::json_pointer(p)] = r.values[j];
   std::unique_ptr<World> world;
@@ -118,7 +133,7 @@ std::vector<SampleResult> Sweep::runAll(int threads, std::span<const int64_t> in
     if (i < 0 || i >= desc_.samples)
       throw Error("sample index " + std::to_string(i) + " is outside 0.." +
                   std::to_string(desc_.samples - 1));
-  if (threads < 0) throw Error("--threads must be >= 0 (0 = every core)");
+  if (threads < 0) throw SweepError(SweepField::Threads, "", "must be >= 0 (0 = every core)");
   // One task per sample, each writing its own slot: the order of completion cannot matter.
   std::vector<SampleResult> results(indices.size());
   tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : threads);

@@ -4,12 +4,20 @@
 #include <cstdint>
 #include <limits>
 #include <string_view>
+#include <utility>
+
+#include <nlohmann/json.hpp>
 
 #include "asperity/error.hpp"
 #include "asperity/sweep/sweep.hpp"
 
 namespace asperity {
 namespace {
+
+// A variation rejected: `subject` is the variation as written.
+[[noreturn]] void badVariation(const std::string& subject, const std::string& problem) {
+  throw SweepError(SweepField::Vary, subject, problem);
+}
 
 // A finite number filling all of `text` (spaces around it allowed), else throws.
 double parseNumber(std::string_view text, const std::string& what) {
@@ -19,7 +27,7 @@ double parseNumber(std::string_view text, const std::string& what) {
   const auto r = std::from_chars(text.data(), text.data() + text.size(), value);
   if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size() ||
       !std::isfinite(value))
-    throw Error(what + ": '" + std::string(text) + "' is not a finite number");
+    badVariation(what, "'" + std::string(text) + "' is not a finite number");
   return value;
 }
 
@@ -28,20 +36,20 @@ void checkArgs(const Variation& v, const std::string& what) {
   const size_t n = v.args.size();
   switch (v.distribution) {
     case Distribution::Uniform:
-      if (n != 2) throw Error(what + ": uniform(a,b) takes 2 numbers");
-      if (!(v.args[0] <= v.args[1])) throw Error(what + ": uniform(a,b) needs a <= b");
+      if (n != 2) badVariation(what, "uniform(a,b) takes 2 numbers");
+      if (!(v.args[0] <= v.args[1])) badVariation(what, "uniform(a,b) needs a <= b");
       break;
     case Distribution::Normal:
-      if (n != 2) throw Error(what + ": normal(mean,sd) takes 2 numbers");
-      if (v.args[1] < 0.0) throw Error(what + ": normal(mean,sd) needs sd >= 0");
+      if (n != 2) badVariation(what, "normal(mean,sd) takes 2 numbers");
+      if (v.args[1] < 0.0) badVariation(what, "normal(mean,sd) needs sd >= 0");
       break;
     case Distribution::Choice:
-      if (n < 1) throw Error(what + ": choice(v1,v2,...) takes at least one number");
+      if (n < 1) badVariation(what, "choice(v1,v2,...) takes at least one number");
       break;
     case Distribution::Grid:
-      if (n != 3) throw Error(what + ": grid(a,b,n) takes 3 numbers");
+      if (n != 3) badVariation(what, "grid(a,b,n) takes 3 numbers");
       if (v.args[2] < 1.0 || v.args[2] > 1e6 || v.args[2] != std::floor(v.args[2]))
-        throw Error(what + ": grid(a,b,n) needs a whole n in 1..1000000");
+        badVariation(what, "grid(a,b,n) needs a whole n in 1..1000000");
       break;
   }
 }
@@ -81,16 +89,49 @@ double draw(const Variation& v, uint64_t seed, int64_t sample, size_t variation)
   return 0.0;
 }
 
+// The library's word for each field of a sweep's description.
+const char* fieldWord(SweepField field) {
+  switch (field) {
+    case SweepField::Vary:
+      return "variation";
+    case SweepField::Measures:
+      return "measure";
+    case SweepField::Samples:
+      return "samples";
+    case SweepField::Seconds:
+      return "seconds";
+    case SweepField::Threads:
+      return "threads";
+  }
+  return "sweep";
+}
+
+// "NAME SUBJECT: PROBLEM", without the subject when there is none.
+std::string sweepMessage(const std::string& name, const std::string& subject,
+                         const std::string& problem) {
+  return name + (subject.empty() ? "" : " " + subject) + ": " + problem;
+}
+
 }  // namespace
 
+SweepError::SweepError(SweepField field, std::string subject, std::string problem)
+    : Error(sweepMessage(fieldWord(field), subject, problem)),
+      field_(field),
+      subject_(std::move(subject)),
+      problem_(std::move(problem)) {}
+
+std::string SweepError::messageNaming(const std::string& name) const {
+  return sweepMessage(name, subject_, problem_);
+}
+
 Variation parseVariation(const std::string& path, const std::string& spec) {
-  const std::string what = "--vary '" + path + "=" + spec + "'";
+  const std::string what = "'" + path + "=" + spec + "'";
   if (path.empty() || path.front() != '/')
-    throw Error(what + ": the path must be a JSON pointer starting with '/'");
+    badVariation(what, "the path must be a JSON pointer starting with '/'");
   // NAME(ARGS) with NAME one of the four distributions.
   const size_t open = spec.find('(');
   if (open == std::string::npos || spec.back() != ')')
-    throw Error(what + ": expected uniform(a,b), normal(m,s), choice(a,b,...) or grid(a,b,n)");
+    badVariation(what, "expected uniform(a,b), normal(m,s), choice(a,b,...) or grid(a,b,n)");
   const std::string name = spec.substr(0, open);
   Variation v;
   v.path = path;
@@ -103,8 +144,8 @@ Variation parseVariation(const std::string& path, const std::string& spec) {
   else if (name == "grid")
     v.distribution = Distribution::Grid;
   else
-    throw Error(what + ": unknown distribution '" + name +
-                "' (available: uniform, normal, choice, grid)");
+    badVariation(what,
+                 "unknown distribution '" + name + "' (available: uniform, normal, choice, grid)");
   // Comma-separated numbers between the parentheses.
   const std::string_view args(spec.data() + open + 1, spec.size() - open - 2);
   size_t start = 0;
@@ -119,12 +160,12 @@ Variation parseVariation(const std::string& path, const std::string& spec) {
 
 Variation parseVariation(const std::string& text) {
   const size_t eq = text.find('=');
-  if (eq == std::string::npos) throw Error("--vary '" + text + "': expected PATH=SPEC");
+  if (eq == std::string::npos) badVariation("'" + text + "'", "expected PATH=SPEC");
   return parseVariation(text.substr(0, eq), text.substr(eq + 1));
 }
 
 std::vector<std::string> expandPath(const nlohmann::json& scene, const std::string& path) {
-  const std::string what = "--vary " + path;
+  const std::string& what = path;
   // Walk the segments, keeping every (pointer, node) pair that matches so far. Below a `*`,
   // elements without the rest of the path drop out (static bodies have no velocity); a
   // segment that no element has is an error.
@@ -138,7 +179,7 @@ std::vector<std::string> expandPath(const nlohmann::json& scene, const std::stri
     std::string missing;
     for (const auto& [pointer, node] : matches) {
       if (segment == "*") {
-        if (!node->is_array()) throw Error(what + ": " + pointer + " is not an array");
+        if (!node->is_array()) badVariation(what, pointer + " is not an array");
         for (size_t i = 0; i < node->size(); ++i)
           next.emplace_back(pointer + "/" + std::to_string(i), &(*node)[i]);
         continue;
@@ -146,13 +187,13 @@ std::vector<std::string> expandPath(const nlohmann::json& scene, const std::stri
       const nlohmann::json::json_pointer one("/" + segment);
       if (node->is_primitive() || !node->contains(one)) {
         if (missing.empty()) missing = pointer + "/" + segment;
-        if (!under_star) throw Error(what + ": " + missing + " is not in the scene");
+        if (!under_star) badVariation(what, missing + " is not in the scene");
         continue;
       }
       next.emplace_back(pointer + "/" + segment, &node->at(one));
     }
     if (next.empty())
-      throw Error(what + ": " + (missing.empty() ? path : missing) + " is not in the scene");
+      badVariation(what, (missing.empty() ? path : missing) + " is not in the scene");
     under_star = under_star || segment == "*";
     matches = std::move(next);
     start = slash + 1;
@@ -161,7 +202,7 @@ std::vector<std::string> expandPath(const nlohmann::json& scene, const std::stri
   std::vector<std::string> pointers;
   for (const auto& [pointer, node] : matches) {
     if (!node->is_number())
-      throw Error(what + ": " + pointer + " is " + node->type_name() + ", not a number");
+      badVariation(what, pointer + " is " + node->type_name() + ", not a number");
     pointers.push_back(pointer);
   }
   return pointers;

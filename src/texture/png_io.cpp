@@ -5,7 +5,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 
 #include "asperity/error.hpp"
 #include "texture/png_codec.hpp"
@@ -66,13 +65,13 @@ NormalMap fromImage(const png::Image& image, GreenConvention green, double scale
 
 }  // namespace
 
-void warnInvalidTexels(const std::string& name, const NormalMapStats& stats) {
+void warnInvalidTexels(const std::string& name, const NormalMapStats& stats,
+                       Diagnostics& diagnostics) {
   if (stats.invalid == 0) return;
   const double percent = 100.0 * stats.invalidFraction();
   const long rounded = std::lround(percent);
   const std::string shown = rounded == 0 ? "< 1" : std::to_string(rounded);
-  std::cerr << "asperity: warning: " << name << ": " << shown
-            << " % of texels are not unit normals; treated as flat\n";
+  diagnostics.warn(name + ": " + shown + " % of texels are not unit normals; treated as flat");
 }
 
 std::optional<std::vector<uint8_t>> readFileBytes(const std::string& path) {
@@ -95,13 +94,7 @@ NormalMap loadNormalMapPng(const std::string& path, GreenConvention green, Norma
   requireRgb(png::inspect(bytes, path, kMaxTextureSize), path);
   const png::Image image = png::decode(bytes, path, kMaxTextureSize, 3);
   NormalMapStats local;
-  NormalMap map = fromImage(image, green, 1.0, local);
-  // The caller that asks for the counts reports them itself.
-  if (stats)
-    *stats = local;
-  else
-    warnInvalidTexels(path, local);
-  return map;
+  return fromImage(image, green, 1.0, stats ? *stats : local);
 }
 
 NormalMap decodeNormalMap(const std::vector<uint8_t>& bytes, const std::string& name,
@@ -110,13 +103,7 @@ NormalMap decodeNormalMap(const std::vector<uint8_t>& bytes, const std::string& 
   if (png::isPng(bytes)) requireRgb(png::inspect(bytes, name, kMaxTextureSize), name);
   const png::Image image = png::decodeAny(bytes, name, kMaxTextureSize, 3);
   NormalMapStats local;
-  NormalMap map = fromImage(image, green, scale, local);
-  // The caller that asks for the counts reports them itself.
-  if (stats)
-    *stats = local;
-  else
-    warnInvalidTexels(name, local);
-  return map;
+  return fromImage(image, green, scale, stats ? *stats : local);
 }
 
 void saveNormalMapPng(const NormalMap& map, const std::string& path,

@@ -86,12 +86,14 @@ void World::recordContacts(StepProfile& p) const {
 }
 
 BodyId World::createBody(const BodyDesc& desc) {
-  // Surfaces described in code by their source alone get their maps here (scenes resolve
-  // theirs beforehand, sharing one map between equal surfaces).
-  BodyDesc resolved = desc;
-  for (Shape& shape : resolved.shapes) resolveSurface(shape.surface);
-  bodies_.push_back(makeBody(resolved));
-  descs_.push_back(std::move(resolved));
+  // Surfaces arrive resolved (a scene's instantiate(), or resolveSurfaces): no file is read here.
+  for (size_t i = 0; i < desc.shapes.size(); ++i)
+    if (const std::string part = unresolvedPart(desc.shapes[i].surface); !part.empty())
+      throw Error("body \"" + desc.name + "\" shape " + std::to_string(i) + ": its surface's " +
+                  part +
+                  " is not resolved; call resolveSurfaces(desc.shapes, "
+                  "world.diagnostics()) (asperity/geometry/shape.hpp) before createBody");
+  bodies_.push_back(makeBody(desc));
   bodies_changed_ = true;
   return static_cast<BodyId>(bodies_.size() - 1);
 }
@@ -102,7 +104,7 @@ void World::checkBody(BodyId id, const std::string& what) const {
   }
 }
 
-int World::createJoint(const JointDesc& desc) {
+JointId World::createJoint(const JointDesc& desc) {
   const std::string what = "joint '" + desc.name + "'";
   checkBody(desc.body_a, what);
   checkBody(desc.body_b, what);
@@ -126,22 +128,23 @@ int World::createJoint(const JointDesc& desc) {
     collision_->ignorePair(desc.body_a, desc.body_b);
     bodies_changed_ = true;
   }
-  return static_cast<int>(joints_.size() - 1);
+  return static_cast<JointId>(joints_.size() - 1);
 }
 
-int World::addSpring(const SpringDesc& desc) {
+SpringId World::addSpring(const SpringDesc& desc) {
   checkBody(desc.body, "spring '" + desc.name + "'");
   if (desc.stiffness < 0.0 || desc.damping < 0.0) {
     throw Error("spring '" + desc.name + "': stiffness and damping must be >= 0");
   }
   springs_.push_back(desc);
-  return static_cast<int>(springs_.size() - 1);
+  return static_cast<SpringId>(springs_.size() - 1);
 }
 
-void World::addLoad(const LoadDesc& desc) {
+LoadId World::addLoad(const LoadDesc& desc) {
   checkBody(desc.body, "load '" + desc.name + "'");
   if (!desc.value.allFinite()) throw Error("load '" + desc.name + "': value is not finite");
   loads_.push_back(desc);
+  return static_cast<LoadId>(loads_.size() - 1);
 }
 
 size_t World::removeFinishedLoads() {
@@ -169,11 +172,6 @@ const Body& World::body(BodyId id) const {
   return bodies_[id];
 }
 
-const BodyDesc& World::bodyDesc(BodyId id) const {
-  checkBody(id, "World::bodyDesc");
-  return descs_[id];
-}
-
 BodyId World::findBody(std::string_view name) const {
   for (size_t i = 0; i < bodies_.size(); ++i) {
     if (bodies_[i].name == name) return static_cast<BodyId>(i);
@@ -181,8 +179,8 @@ BodyId World::findBody(std::string_view name) const {
   return kNoBody;
 }
 
-double World::jointError(int index) const {
-  const JointDesc& j = joints_.at(static_cast<size_t>(index));
+double World::jointError(JointId id) const {
+  const JointDesc& j = joints_.at(id);
   const Vec3 pa = bodies_[j.body_a].descriptionPose().apply(j.anchor_a);
   const Vec3 pb = bodies_[j.body_b].descriptionPose().apply(j.anchor_b);
   // Distance joints: deviation from the current target length; others: anchor separation.

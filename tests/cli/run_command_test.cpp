@@ -118,18 +118,18 @@ TEST(RunCommand, FrictionAndFrameOverrideTheScene) {
   const std::string polygon = run({"run", base});
   const std::string coulomb = run({"run", base, "--friction", "coulomb"});
   EXPECT_NE(polygon, coulomb);
-  EXPECT_EQ(coulomb, run({"run", editedScene("settings.json", "friction", "coulomb")}));
+  EXPECT_EQ(coulomb, run({"run", editedScene("settings.json", "limit_surface", "coulomb")}));
   const std::string auto_frame = run({"run", base, "--frame", "auto"});
-  EXPECT_EQ(auto_frame, run({"run", editedScene("settings.json", "frame", "auto")}));
+  EXPECT_EQ(auto_frame, run({"run", editedScene("settings.json", "frame_mode", "auto")}));
   EXPECT_EQ(run({"run", base, "--sampler", "constant"}),
-            run({"run", editedScene("settings.json", "sampler", "constant")}));
+            run({"run", editedScene("settings.json", "friction_provider", "constant")}));
 }
 
 TEST(RunCommand, PatchSettingsOverrideTheScene) {
   // settings.json samples with the cone provider; the cpu sampler reads N, w and R.
   const std::string base = example("settings.json");
   nlohmann::json j = nlohmann::json::parse(slurpBinary(base));
-  j["settings"]["sampler"] = "cpu";
+  j["settings"]["friction_provider"] = "cpu";
   j["settings"]["directions"] = 12;
   j["settings"]["patch_width"] = 0.05;
   j["settings"]["patch_resolution"] = 8;
@@ -195,6 +195,25 @@ TEST(RunCommand, ExplosionsAndDeepNestingAreOneLineErrors) {
   EXPECT_NE(stiff.err.find("asperity: warning: " + dir + "/stiff.json: spring 's': period"),
             std::string::npos)
       << stiff.err;
+}
+
+// A deprecated key still runs, with one warning line on stderr naming the key to use; the hash
+// is the same as with the new key.
+TEST(RunCommand, DeprecatedKeysRunWithAWarning) {
+  const std::string old_scene = editedScene("minimal.json", "frame", "world");
+  const auto old_run = runCli({"run", old_scene, "--steps", "5", "--hash"});
+  ASSERT_EQ(old_run.exit_code, 0) << old_run.err;
+  EXPECT_EQ(old_run.err, "asperity: warning: " + old_scene +
+                             ": /settings/frame: deprecated, use \"frame_mode\"\n");
+  const auto new_run = runCli({"run", example("minimal.json"), "--steps", "5", "--hash"});
+  EXPECT_EQ(new_run.err, "");
+  EXPECT_EQ(old_run.out, new_run.out);
+  // Both at once is an error naming the pointer.
+  nlohmann::json both = nlohmann::json::parse(slurpBinary(old_scene));
+  both["settings"]["frame_mode"] = "world";
+  std::ofstream(old_scene) << both.dump();
+  expectOneLineError(runCli({"run", old_scene, "--steps", "1"}),
+                     old_scene + ": /settings/frame: deprecated name of \"frame_mode\"");
 }
 
 TEST(RunCommand, BadSceneFilesAreOneLineErrors) {

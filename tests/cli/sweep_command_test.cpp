@@ -58,15 +58,16 @@ TEST(SweepCommand, RowHashEqualsRunOfTheVariedScene) {
 TEST(SweepCommand, BadInputsAreOneLineErrors) {
   const std::string out = test::tempDir("sweep_bad") + "/s.csv";
   expectOneLineError(runCli({"sweep", "missing.json", "--out", out}), "missing.json");
+  // The sweep library's errors, with this command's option names.
   expectOneLineError(runCli({"sweep", minimal(), "--vary", "/nope=uniform(0,1)", "--out", out}),
-                     "/nope is not in the scene");
+                     "--vary /nope: /nope is not in the scene");
   expectOneLineError(runCli({"sweep", minimal(), "--vary", "/settings", "--out", out}),
-                     "expected PATH=SPEC");
+                     "--vary '/settings': expected PATH=SPEC");
   expectOneLineError(
       runCli({"sweep", minimal(), "--vary", "/bodies/1/position/2=gamma(1,2)", "--out", out}),
-      "unknown distribution 'gamma'");
+      "--vary '/bodies/1/position/2=gamma(1,2)': unknown distribution 'gamma'");
   expectOneLineError(runCli({"sweep", minimal(), "--measure", "distance:ghost", "--out", out}),
-                     "no body named 'ghost'");
+                     "--measure 'distance:ghost': the scene has no body named 'ghost'");
   expectOneLineError(runCli({"sweep", minimal(), "--samples", "0", "--out", out}), "--samples");
   expectOneLineError(runCli({"sweep", minimal(), "--threads", "-1", "--out", out}), "--threads");
   expectOneLineError(runCli({"sweep", minimal(), "--seconds", "nan", "--out", out}), "--seconds");

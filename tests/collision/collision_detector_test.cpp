@@ -81,8 +81,7 @@ TEST(CollisionDetector, MillimetreBoxStack) {
 TEST(CollisionDetector, MillimetrePrimitivesOnABox) {
   // Half-millimetre radii, 10 um deep: Bullet's GJK works in scaled units (bulletScale).
   const double r = 5e-4, hh = 1e-3, d = 1e-5;
-  Body table = boxBody(Vec3(0.01, 0.01, 0.001), Vec3(0, 0, -0.001), 0.0);
-  table.type = BodyType::Static;
+  const Body table = boxBody(Vec3(0.01, 0.01, 0.001), Vec3(0, 0, -0.001), 0.0, BodyType::Static);
   const Quat lying(Eigen::AngleAxisd(kPi / 2, Vec3::UnitY()));
   const std::vector<Body> bodies[] = {
       {table, sphereBody(r, Vec3(0.001, 0, r - d))},
@@ -103,8 +102,7 @@ TEST(CollisionDetector, MillimetrePrimitivesOnABox) {
 
 TEST(CollisionDetector, KinematicBodyIsB) {
   // A kinematic box under a dynamic sphere with the higher id: the sphere is still A.
-  Body platform = boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0);
-  platform.type = BodyType::Kinematic;
+  const Body platform = boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0, BodyType::Kinematic);
   const auto contacts =
       detectOnce({sphereBody(0.1, Vec3(2, 0, 0.5)), platform, sphereBody(0.1, Vec3(0, 0, 0.098))});
   ASSERT_EQ(contacts.size(), 1u);
@@ -221,8 +219,7 @@ TEST(CollisionDetector, ConvexHullCubeOnPlaneAndOnBox) {
     EXPECT_TRUE(near(c.normal.z(), 1.0, 0, 1e-9));
   }
   // The same hull on a static box: face contact at depth d, normal +z.
-  Body table = boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0);
-  table.type = BodyType::Static;
+  const Body table = boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0, BodyType::Static);
   const auto on_box = detectOnce({table, hullBody(cubePoints(h), Vec3(0, 0, h - d))});
   ASSERT_GE(on_box.size(), 3u);
   for (const Contact& c : on_box) {
@@ -241,8 +238,7 @@ TEST(CollisionDetector, ManyFacedHullStandsOnABoxOnItsCap) {
     for (const double z : {-h, h})
       prism->vertices.emplace_back(r * std::cos(a), r * std::sin(a), z);
   }
-  Body table = boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0);
-  table.type = BodyType::Static;
+  const Body table = boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0, BodyType::Static);
   const auto contacts = detectOnce({table, hullBody(prism, Vec3(0, 0, h - d))});
   ASSERT_GE(contacts.size(), 3u);
   for (const Contact& c : contacts) {
@@ -308,8 +304,7 @@ TEST(CollisionDetector, OpenDynamicMeshOnBoxReportsItsTriangles) {
   // name the mesh's bottom triangles.
   auto open = std::make_shared<TriangleMeshData>(*boxMesh(Vec3::Constant(0.1)));
   open->triangles.erase(open->triangles.begin() + 2, open->triangles.begin() + 4);
-  Body table = boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0);
-  table.type = BodyType::Static;
+  const Body table = boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0, BodyType::Static);
   const auto contacts = detectOnce({table, meshBody(open, BodyType::Dynamic, Vec3(0, 0, 0.099))});
   ASSERT_GE(contacts.size(), 3u);
   for (const Contact& c : contacts) {
@@ -321,11 +316,12 @@ TEST(CollisionDetector, OpenDynamicMeshOnBoxReportsItsTriangles) {
 
 TEST(CollisionDetector, CompoundBodyKeepsShapeIndices) {
   // A dumbbell: two spheres on one body; only the second touches the ground.
-  Body body = sphereBody(0.05, Vec3(0, 0, 0.2));
-  Shape second = body.shapes[0];
+  BodyDesc dumbbell =
+      shapeDesc(BodyType::Dynamic, Vec3(0, 0, 0.2), Quat::Identity(), sphereShape(0.05));
+  Shape second = dumbbell.shapes[0];
   second.local.position = Vec3(0.3, 0, -0.16);
-  body.shapes.push_back(second);
-  const auto contacts = detectOnce({groundPlane(), body});
+  dumbbell.shapes.push_back(second);
+  const auto contacts = detectOnce({groundPlane(), makeBody(dumbbell)});
   ASSERT_EQ(contacts.size(), 1u);
   EXPECT_EQ(contacts[0].shape_a, 1);
   EXPECT_TRUE(near(contacts[0].phi, 0.01, 0, 1e-9));
@@ -387,23 +383,22 @@ TEST(CollisionDetector, IgnoredPairsAndStaticPairsGiveNoContacts) {
   for (const Contact& c : detector.detect(bodies)) EXPECT_EQ(c.body_b, 0u);
   EXPECT_EQ(detector.detect(bodies).size(), 4u);
   // Static boxes overlapping the ground plane are never paired.
-  bodies[1].type = BodyType::Static;
-  bodies[2].type = BodyType::Kinematic;
+  bodies[1] = boxBody(Vec3::Constant(0.1), Vec3(0, 0, 0.099), 0, BodyType::Static);
+  bodies[2] = boxBody(Vec3::Constant(0.1), Vec3(0, 0, 0.297), 0, BodyType::Kinematic);
   detector.setBodies(bodies, {});
   EXPECT_TRUE(detector.detect(bodies).empty());
 }
 
 TEST(CollisionDetector, BadInputIsReported) {
   CollisionDetector detector;
-  // A plane on a dynamic body.
+  // A plane on a dynamic body, made by hand: makeBody refuses it too, and the detector must
+  // not count on that.
   Body plane = groundPlane();
   plane.type = BodyType::Dynamic;
   const std::vector<Body> bad = {plane};
   EXPECT_THROW(detector.setBodies(bad, {}), Error);
   // A mesh shape without a mesh.
-  Body empty_mesh = meshBody(boxMesh(Vec3::Constant(0.1)), BodyType::Static, Vec3::Zero());
-  empty_mesh.shapes[0].mesh = nullptr;
-  const std::vector<Body> bad_mesh = {empty_mesh};
+  const std::vector<Body> bad_mesh = {meshBody(nullptr, BodyType::Static, Vec3::Zero())};
   EXPECT_THROW(detector.setBodies(bad_mesh, {}), Error);
   // Settings out of range.
   for (int which = 0; which < 4; ++which) {
@@ -435,8 +430,10 @@ TEST(CollisionDetector, ReportGapsGivesNegativePhiWithinMargin) {
 }
 
 // An M4-sized square nut (7 mm across, 2 mm bore half width) on a static square bolt.
-std::vector<Body> nutOnBolt(double shift_x) {
-  const auto nut = squareNutMesh(0.0035, 0.002, 0.0016);
+// With `split_faces`, every triangle of the nut has its own vertices (splitAtFaces).
+std::vector<Body> nutOnBolt(double shift_x, bool split_faces = false) {
+  std::shared_ptr<const TriangleMeshData> nut = squareNutMesh(0.0035, 0.002, 0.0016);
+  if (split_faces) nut = splitAtFaces(*nut);
   const auto bolt = boxMesh(Vec3(0.0018, 0.0018, 0.01));
   return {meshBody(bolt, BodyType::Static, Vec3::Zero()),
           meshBody(nut, BodyType::Dynamic, Vec3(shift_x, 0, 0.002))};
@@ -475,12 +472,9 @@ TEST(CollisionDetector, NutOnBoltUsesSignedDistance) {
 TEST(CollisionDetector, NutWithUvSeamsOnBoltUsesSignedDistance) {
   // The nut with every triangle's vertices split (per-face UVs) is still closed: centred it
   // clears the bolt (its hull would not), shifted it touches exactly as the unsplit nut.
-  auto split = nutOnBolt(0.0);
-  split[1].shapes[0].mesh = splitAtFaces(*split[1].shapes[0].mesh);
-  EXPECT_TRUE(detectOnce(split).empty());
-  split[1].pose.position.x() = 0.00025;
+  EXPECT_TRUE(detectOnce(nutOnBolt(0.0, true)).empty());
   const auto whole = detectOnce(nutOnBolt(0.00025));
-  const auto contacts = detectOnce(split);
+  const auto contacts = detectOnce(nutOnBolt(0.00025, true));
   ASSERT_FALSE(contacts.empty());
   ASSERT_EQ(contacts.size(), whole.size());
   for (size_t i = 0; i < contacts.size(); ++i) {
@@ -493,11 +487,7 @@ TEST(CollisionDetector, NutWithUvSeamsOnBoltUsesSignedDistance) {
 
 TEST(CollisionDetector, NutOnCylinderBolt) {
   // A static cylinder bolt (r 1.8 mm) through the dynamic nut's square bore.
-  Shape rod;
-  rod.type = ShapeType::Cylinder;
-  rod.radius = 0.0018;
-  rod.half_height = 0.01;
-  Body bolt = makeBody(BodyType::Static, Vec3::Zero(), Quat::Identity(), rod);
+  const Body bolt = cylinderBody(0.0018, 0.01, Vec3::Zero(), Quat::Identity(), BodyType::Static);
   const auto nut = squareNutMesh(0.0035, 0.002, 0.0016);
   EXPECT_TRUE(detectOnce({bolt, meshBody(nut, BodyType::Dynamic, Vec3(0, 0, 0.002))}).empty());
   // Shifted 0.25 mm: the bore's -x wall cuts 50 um into the rod at y = 0.
@@ -518,8 +508,7 @@ TEST(CollisionDetector, NutOnCylinderBolt) {
 
 TEST(CollisionDetector, ConcaveMeshOnStaticBox) {
   // The nut lying on a static box table, 20 um deep: exact depth from the box's distance.
-  Body table = boxBody(Vec3(0.02, 0.02, 0.005), Vec3(0, 0, -0.005), 0.0);
-  table.type = BodyType::Static;
+  const Body table = boxBody(Vec3(0.02, 0.02, 0.005), Vec3(0, 0, -0.005), 0.0, BodyType::Static);
   const auto nut = squareNutMesh(0.0035, 0.002, 0.0016);
   const auto contacts =
       detectOnce({table, meshBody(nut, BodyType::Dynamic, Vec3(0, 0, 0.0016 - 2e-5))});

@@ -1,58 +1,74 @@
-// Bodies and meshes shared by the collision tests and the collision benchmark.
+// Bodies and meshes shared by the collision tests and the collision benchmark. Bodies are made
+// as a program makes them: a description (the public builders of asperity/world/builders.hpp
+// for the ground and boxes, shapeDesc for one shape of any other kind) made live by makeBody,
+// so that the body frame sits at the centre of mass as it does in a World.
 #pragma once
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "asperity/dynamics/body.hpp"
+#include "asperity/world/builders.hpp"
 
 namespace asperity::collision_test {
 
-inline Body makeBody(BodyType type, const Vec3& position, const Quat& rotation, Shape shape) {
-  Body body;
-  body.type = type;
-  body.pose.position = position;
-  body.pose.rotation = rotation;
-  body.inverse_mass = type == BodyType::Dynamic ? 1.0 : 0.0;
-  body.shapes.push_back(std::move(shape));
-  return body;
+// A body of `type` at (position, rotation) with one shape.
+inline BodyDesc shapeDesc(BodyType type, const Vec3& position, const Quat& rotation, Shape shape) {
+  BodyDesc desc;
+  desc.name = "body";
+  desc.type = type;
+  desc.pose = {position, rotation};
+  desc.shapes.push_back(std::move(shape));
+  return desc;
+}
+
+inline Body shapeBody(BodyType type, const Vec3& position, const Quat& rotation, Shape shape) {
+  return makeBody(shapeDesc(type, position, rotation, std::move(shape)));
 }
 
 // The static ground: the plane z = 0, normal +z.
 inline Body groundPlane() {
-  Shape plane;
-  plane.type = ShapeType::Plane;
-  return makeBody(BodyType::Static, Vec3::Zero(), Quat::Identity(), plane);
+  return makeBody(groundPlaneDesc());
 }
 
-inline Body boxBody(const Vec3& half, const Vec3& position, double yaw) {
-  Shape box;
-  box.type = ShapeType::Box;
-  box.half_extents = half;
-  return makeBody(BodyType::Dynamic, position, Quat(Eigen::AngleAxisd(yaw, Vec3::UnitZ())), box);
+// A box turned by `yaw` about z; dynamic unless `type` says otherwise.
+inline Body boxBody(const Vec3& half, const Vec3& position, double yaw,
+                    BodyType type = BodyType::Dynamic) {
+  BodyDesc desc = boxDesc("box", half, {position, Quat(Eigen::AngleAxisd(yaw, Vec3::UnitZ()))});
+  desc.type = type;
+  return makeBody(desc);
 }
 
-inline Body sphereBody(double radius, const Vec3& position) {
+// Shapes of the other kinds, and dynamic bodies of one of them.
+inline Shape sphereShape(double radius) {
   Shape sphere;
   sphere.type = ShapeType::Sphere;
   sphere.radius = radius;
-  return makeBody(BodyType::Dynamic, position, Quat::Identity(), sphere);
+  return sphere;
+}
+
+// Capsules and cylinders along their local z.
+inline Shape roundShape(ShapeType type, double radius, double half_height) {
+  Shape shape;
+  shape.type = type;
+  shape.radius = radius;
+  shape.half_height = half_height;
+  return shape;
+}
+
+inline Body sphereBody(double radius, const Vec3& position) {
+  return shapeBody(BodyType::Dynamic, position, Quat::Identity(), sphereShape(radius));
 }
 
 inline Body capsuleBody(double radius, double half_height, const Vec3& position, const Quat& q) {
-  Shape capsule;
-  capsule.type = ShapeType::Capsule;
-  capsule.radius = radius;
-  capsule.half_height = half_height;
-  return makeBody(BodyType::Dynamic, position, q, capsule);
+  return shapeBody(BodyType::Dynamic, position, q,
+                   roundShape(ShapeType::Capsule, radius, half_height));
 }
 
-inline Body cylinderBody(double radius, double half_height, const Vec3& position, const Quat& q) {
-  Shape cylinder;
-  cylinder.type = ShapeType::Cylinder;
-  cylinder.radius = radius;
-  cylinder.half_height = half_height;
-  return makeBody(BodyType::Dynamic, position, q, cylinder);
+inline Body cylinderBody(double radius, double half_height, const Vec3& position, const Quat& q,
+                         BodyType type = BodyType::Dynamic) {
+  return shapeBody(type, position, q, roundShape(ShapeType::Cylinder, radius, half_height));
 }
 
 // The corners of a cube of half size h.
@@ -68,7 +84,7 @@ inline Body hullBody(std::shared_ptr<const TriangleMeshData> points, const Vec3&
   Shape hull;
   hull.type = ShapeType::ConvexHull;
   hull.mesh = std::move(points);
-  return makeBody(BodyType::Dynamic, position, Quat::Identity(), hull);
+  return shapeBody(BodyType::Dynamic, position, Quat::Identity(), hull);
 }
 
 // A closed box mesh (12 outward-wound triangles) of half extents h.
@@ -85,12 +101,16 @@ inline std::shared_ptr<TriangleMeshData> boxMesh(const Vec3& h) {
   return mesh;
 }
 
-inline Body meshBody(std::shared_ptr<const TriangleMeshData> mesh, BodyType type,
-                     const Vec3& position, const Quat& q = Quat::Identity()) {
+inline Shape meshShape(std::shared_ptr<const TriangleMeshData> mesh) {
   Shape shape;
   shape.type = ShapeType::TriangleMesh;
   shape.mesh = std::move(mesh);
-  return makeBody(type, position, q, shape);
+  return shape;
+}
+
+inline Body meshBody(std::shared_ptr<const TriangleMeshData> mesh, BodyType type,
+                     const Vec3& position, const Quat& q = Quat::Identity()) {
+  return shapeBody(type, position, q, meshShape(std::move(mesh)));
 }
 
 // A static ground made of two triangles, the square [-half, half]^2 at z = 0.

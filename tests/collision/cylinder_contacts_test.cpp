@@ -27,7 +27,9 @@ Shape box(const Vec3& h) {
   return s;
 }
 
-double axialPart(const Vec3& n) { return std::abs(n.y()); }
+double axialPart(const Vec3& n) {
+  return std::abs(n.y());
+}
 
 TEST(CylinderContacts, FlatPlateOnTopGetsTwoRadialPointsAtItsEdgesAlongTheAxis) {
   // A 5 mm plate, 25 mm along the rod, 40 mm across, 0.5 mm into the rod's top.
@@ -49,8 +51,8 @@ TEST(CylinderContacts, NormalsStayRadialForAPlateTiltedAlongTheAxis) {
   // The plate tilted 0.3 rad about x: its low edge touches; the normal has no axial part.
   const Transform plate{Vec3(0, 0, 0.022), Quat(Eigen::AngleAxisd(0.3, Vec3::UnitX()))};
   std::vector<CylinderSidePoint> pts;
-  ASSERT_TRUE(cylinderSidePoints(rod(), kRodWorld, box(Vec3(0.02, 0.0125, 0.0025)), plate, 0.0,
-                                 pts));
+  ASSERT_TRUE(
+      cylinderSidePoints(rod(), kRodWorld, box(Vec3(0.02, 0.0125, 0.0025)), plate, 0.0, pts));
   ASSERT_FALSE(pts.empty());
   for (const CylinderSidePoint& p : pts) {
     EXPECT_LT(axialPart(p.normal), 1e-9);
@@ -89,12 +91,12 @@ TEST(CylinderContacts, ApartGivesNoPointsCapsAndCrossingAxisGoElsewhere) {
   std::vector<CylinderSidePoint> pts;
   const Shape b = box(Vec3(0.01, 0.01, 0.01));
   // 5 mm above the rod: handled, no points.
-  EXPECT_TRUE(cylinderSidePoints(rod(), kRodWorld, b, Transform{Vec3(0, 0, 0.035), Quat::Identity()},
-                                 0.0, pts));
+  EXPECT_TRUE(cylinderSidePoints(rod(), kRodWorld, b,
+                                 Transform{Vec3(0, 0, 0.035), Quat::Identity()}, 0.0, pts));
   EXPECT_TRUE(pts.empty());
   // Within reach: one gap point with a negative depth.
-  EXPECT_TRUE(cylinderSidePoints(rod(), kRodWorld, b, Transform{Vec3(0, 0, 0.035), Quat::Identity()},
-                                 0.01, pts));
+  EXPECT_TRUE(cylinderSidePoints(rod(), kRodWorld, b,
+                                 Transform{Vec3(0, 0, 0.035), Quat::Identity()}, 0.01, pts));
   ASSERT_FALSE(pts.empty());
   EXPECT_NEAR(pts[0].depth, -0.005, 1e-9);
   // Beyond the rod's end, touching its rim: not the side.

@@ -19,7 +19,7 @@ ShapeRecord record(const Body& body, BodyId id) {
   r.body_type = body.type;
   r.shape = body.shapes[0];
   r.closed_mesh = r.shape.type == ShapeType::TriangleMesh && isClosedMesh(*r.shape.mesh);
-  r.world = body.pose;
+  r.world = body.pose * r.shape.local;  // as the detector places it
   return r;
 }
 
@@ -58,9 +58,8 @@ TEST(SdfPairs, FieldsAreSharedAndSamplesFollowTheResolution) {
 TEST(SdfPairs, ContactsOfACubeMeshOnABox) {
   using namespace collision_test;
   // A closed cube mesh 2 mm into a static box: both directions, depth and normal exact.
-  Body table = boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0);
-  table.type = BodyType::Static;
-  const ShapeRecord ground = record(table, 0);
+  const ShapeRecord ground =
+      record(boxBody(Vec3(1, 1, 0.1), Vec3(0, 0, -0.1), 0.0, BodyType::Static), 0);
   const ShapeRecord cube =
       record(meshBody(boxMesh(Vec3::Constant(0.1)), BodyType::Dynamic, Vec3(0, 0, 0.098)), 1);
   CollisionSettings settings;

@@ -28,7 +28,7 @@ std::unique_ptr<World> cubeOnRoughGround() {
   Surface& surface = ground.shapes[0].surface;
   surface.source.generator = {"gaussian", {{"sx", "0.3"}, {"sy", "1"}}, 256, 3};
   surface.gain = 2.0;
-  resolveSurface(surface);
+  resolveSurface(surface, world->diagnostics());
   world->createBody(ground);
   const Quat turn(Eigen::AngleAxisd(0.4, Vec3::UnitZ()));
   world->createBody(boxDesc("cube", Vec3(0.1, 0.1, 0.1), {Vec3(0.0, 0.0, 0.0995), turn}));
@@ -174,7 +174,7 @@ TEST(ContactFriction, BadInputIsAnErrorNamingIt) {
   ObjectDesc unresolved = ground;
   unresolved.name = "rough";
   unresolved.shapes[0].surface.source.normal_map_file = "rough.png";
-  EXPECT_NE(errorOf([&] { friction.addObject(unresolved); }).find("resolve its surface"),
+  EXPECT_NE(errorOf([&] { friction.addObject(unresolved); }).find("is not resolved"),
             std::string::npos);
   EngineContact c;
   c.object_a = 5;

@@ -66,6 +66,7 @@ std::unique_ptr<World> pile() {
   auto world = std::make_unique<World>();
   BodyDesc ground = groundPlaneDesc();
   ground.shapes[0].surface.source.generator = {"concrete", {}, 64, 1};
+  resolveSurfaces(ground.shapes, world->diagnostics());
   world->createBody(ground);
   addCubePile(*world, 200, 0.1, 8);
   world->setFrictionProvider(std::make_unique<CpuPatchSampler>());

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "asperity/error.hpp"
 #include "asperity/scene/scene.hpp"
@@ -30,6 +31,16 @@ std::string loadError(const std::string& text) {
   }
   return "";
 }
+
+// Loads `text` written as <dir>/scene.json (it must load).
+SceneDesc loadText(const std::string& text) {
+  const std::string path = test::tempDir("bodies") + "/scene.json";
+  std::ofstream(path) << text;
+  return loadScene(path);
+}
+
+// An asset every test machine has (Debian's glmark2-data).
+const char* kBunny = "/usr/share/glmark2/models/bunny.obj";
 
 // A scene whose only body is a dynamic body with the given shape JSON.
 std::string withShape(const std::string& shape) {
@@ -161,9 +172,23 @@ TEST(BodyParse, BodyRules) {
             "FILE: /bodies/0/mass: must be a positive number, got 0");
 }
 
-TEST(BodyParse, ConvexHullNeedsPointsOrMesh) {
+// A hull takes exactly one of "points" and "file" (or the deprecated "mesh").
+TEST(BodyParse, ConvexHullNeedsPointsOrFile) {
   EXPECT_EQ(loadError(withShape(R"({"type": "convex_hull"})")),
-            "FILE: /bodies/0/shapes/0: a convex hull needs either \"points\" or \"mesh\"");
+            "FILE: /bodies/0/shapes/0: a convex hull needs exactly one of \"points\" and \"file\", "
+            "got neither");
+  EXPECT_EQ(loadError(withShape(std::string(R"({"type": "convex_hull", "file": ")") + kBunny +
+                                R"(", "points": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]]})")),
+            "FILE: /bodies/0/shapes/0: a convex hull needs exactly one of \"points\" and \"file\", "
+            "got both");
+  EXPECT_EQ(loadError(withShape(std::string(R"({"type": "convex_hull", "mesh": ")") + kBunny +
+                                R"(", "points": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]]})")),
+            "FILE: /bodies/0/shapes/0: a convex hull needs exactly one of \"points\" and \"mesh\", "
+            "got both");
+  EXPECT_EQ(loadError(withShape(std::string(R"({"type": "convex_hull", "mesh": ")") + kBunny +
+                                R"(", "file": ")" + kBunny + R"("})")),
+            "FILE: /bodies/0/shapes/0/mesh: deprecated name of \"file\", which is also given: keep "
+            "only \"file\"");
   EXPECT_EQ(loadError(withShape(R"({"type": "convex_hull", "points": [[0,0,0],[1,0,0]]})")),
             "FILE: /bodies/0/shapes/0/points: a convex hull needs at least 4 points, got 2");
   EXPECT_EQ(loadError(withShape(R"({"type": "convex_hull", "points": [[0,0,0],[1,0]]})")),
@@ -249,7 +274,72 @@ TEST(BodyParse, BadBaseColour) {
   EXPECT_EQ(text.rfind("FILE: /bodies/0/shapes/0/surface/base_color: ", 0), 0u) << text;
 }
 
+// Every shape that reads an asset names it with "file"; a hull's old "mesh" still reads, with a
+// warning.
+TEST(BodyParse, ConvexHullFromAFile) {
+  const SceneDesc scene = loadText(withShape(std::string(R"({"type": "convex_hull", "file": ")") +
+                                             kBunny + R"(", "scale": 0.1})"));
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  EXPECT_EQ(scene.meshes[0].file, kBunny);
+  EXPECT_TRUE(scene.warnings.empty());
+  const SceneDesc old = loadText(withShape(std::string(R"({"type": "convex_hull", "mesh": ")") +
+                                           kBunny + R"(", "scale": 0.1})"));
+  ASSERT_EQ(old.meshes.size(), 1u);
+  EXPECT_EQ(old.meshes[0].file, kBunny);
+  ASSERT_EQ(old.warnings.size(), 1u);
+  EXPECT_EQ(old.warnings[0],
+            old.source_file + ": /bodies/0/shapes/0/mesh: deprecated, use \"file\"");
+  // Saved, it names the file under "file".
+  const nlohmann::json saved = sceneToJson(old)["bodies"][0]["shapes"][0];
+  EXPECT_EQ(saved["file"], kBunny);
+  EXPECT_FALSE(saved.contains("mesh"));
+}
+
+// Named materials: a shape's "surface" may name an entry of "materials" and gets a copy of it.
+TEST(BodyParse, NamedMaterials) {
+  const SceneDesc scene = loadText(R"({"materials": {
+      "oak": {"normal_map": {"generator": "oak", "size": 32}, "gain": 2},
+      "ice": {"gain": 0, "base_color": [0.8, 0.9, 1]}},
+    "bodies": [{"name": "a", "shapes": [{"type": "sphere", "radius": 0.1, "surface": "oak"}]},
+               {"name": "b", "shapes": [{"type": "sphere", "radius": 0.1, "surface": "ice"},
+                                        {"type": "sphere", "radius": 0.1,
+                                         "surface": {"gain": 3}}]}]})");
+  ASSERT_EQ(scene.materials.size(), 2u);
+  EXPECT_TRUE(scene.materials.at("ice").names_base_color);
+  EXPECT_FALSE(scene.materials.at("oak").names_base_color);
+  const Surface& oak = scene.bodies[0].shapes[0].surface;
+  EXPECT_EQ(oak.source.material, "oak");
+  EXPECT_EQ(oak.source.generator.name, "oak");
+  EXPECT_EQ(oak.gain, 2.0);
+  EXPECT_EQ(scene.bodies[1].shapes[0].surface.base_color, Vec3(0.8, 0.9, 1.0));
+  EXPECT_EQ(scene.bodies[1].shapes[1].surface.source.material, "");
+  EXPECT_EQ(scene.bodies[1].shapes[1].surface.gain, 3.0);
+}
+
+// A name that is not in the table is an error naming the pointer and the known names.
+TEST(BodyParse, UnknownMaterial) {
+  EXPECT_EQ(loadError(R"({"materials": {"oak": {}, "acrylic": {}},
+      "bodies": [{"name": "b",
+                  "shapes": [{"type": "sphere", "radius": 0.1, "surface": "teak"}]}]})"),
+            "FILE: /bodies/0/shapes/0/surface: unknown material \"teak\" (one of \"acrylic\", "
+            "\"oak\")");
+  EXPECT_EQ(loadError(withShape(R"({"type": "sphere", "radius": 0.1, "surface": "teak"})")),
+            "FILE: /bodies/0/shapes/0/surface: unknown material \"teak\" (the scene has no "
+            "\"materials\")");
+  EXPECT_EQ(loadError(withShape(R"({"type": "sphere", "radius": 0.1, "surface": 3})")),
+            "FILE: /bodies/0/shapes/0/surface: must be an object or the name of a material, got 3");
+  EXPECT_EQ(loadError(R"({"materials": {"oak": "teak"}})"),
+            "FILE: /materials/oak: must be an object, got string \"teak\"");
+  EXPECT_EQ(loadError(R"({"materials": {"oak": {"gain": -1}}})"),
+            "FILE: /materials/oak/gain: must be a number in [0, 10000], got -1");
+  EXPECT_EQ(loadError(R"({"materials": {"oak": {"grain": 1}}})")
+                .rfind("FILE: /materials/oak/grain: unknown key", 0),
+            0u);
+}
+
 TEST(BodyParse, MissingMesh) {
+  EXPECT_EQ(loadError(withShape(R"({"type": "convex_hull", "file": "rock.obj"})")),
+            "FILE: /bodies/0/shapes/0/file: file not found: \"DIR/rock.obj\"");
   EXPECT_EQ(loadError(withShape(R"({"type": "convex_hull", "mesh": "rock.obj"})")),
             "FILE: /bodies/0/shapes/0/mesh: file not found: \"DIR/rock.obj\"");
   EXPECT_EQ(loadError(R"({"bodies": [{"name": "b", "type": "static",

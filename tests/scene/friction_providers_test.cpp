@@ -61,7 +61,7 @@ TEST(FrictionProviders, TablesAreIndependent) {
 
 TEST(FrictionProviders, InstantiateUsesTheGivenTable) {
   SceneDesc scene;
-  scene.sampler = "renamed-constant";
+  scene.friction_provider = "renamed-constant";
   // The built-in table does not know the name; the table given to instantiate() does.
   EXPECT_THROW(instantiate(scene), Error);
   InstantiateOptions options;

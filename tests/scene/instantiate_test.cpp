@@ -12,6 +12,7 @@
 #include "asperity/texture/generators.hpp"
 #include "asperity/texture/png_io.hpp"
 #include "support/test_support.hpp"
+#include "texture/png_codec.hpp"
 
 namespace asperity {
 namespace {
@@ -38,7 +39,7 @@ TEST(Instantiate, EveryExampleBuildsAWorld) {
     EXPECT_EQ(world->joints().size(), scene.joints.size());
     EXPECT_EQ(world->springs().size(), scene.springs.size());
     EXPECT_EQ(world->loads().size(), scene.loads.size());
-    EXPECT_EQ(world->frictionProvider().name(), scene.sampler);
+    EXPECT_EQ(world->frictionProvider().name(), scene.friction_provider);
     EXPECT_EQ(world->settings().dt, scene.settings.dt);
   }
 }
@@ -163,20 +164,53 @@ TEST(Instantiate, SlidingBoxStopsAtTheCoulombDistance) {
   EXPECT_TRUE(test::near(box.linear_velocity.norm(), 0.0, 0.0, 1e-6));
 }
 
-TEST(Instantiate, UnknownSamplerNamesTheSetting) {
+TEST(Instantiate, UnknownFrictionProviderNamesTheSetting) {
   SceneDesc scene = example("minimal.json");
-  scene.sampler = "velvet";
+  scene.friction_provider = "velvet";
   try {
     instantiate(scene);
     FAIL();
   } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(scene.source_file +
-                                              ": /settings/sampler: unknown friction sampler "
-                                              "\"velvet\" (available: ",
-                                          0),
-              0u)
+    EXPECT_EQ(
+        std::string(e.what()).rfind(scene.source_file + ": /settings/friction_provider: unknown "
+                                                        "friction sampler "
+                                                        "\"velvet\" (available: ",
+                                    0),
+        0u)
         << e.what();
   }
+}
+
+// Shapes that name one material share one resolved map.
+TEST(Instantiate, ShapesOfOneMaterialShareOneMap) {
+  const std::unique_ptr<World> world = instantiate(example("materials.json"));
+  const Surface& a = surfaceOf(*world, "crate_a");
+  ASSERT_NE(a.normal_map, nullptr);
+  EXPECT_EQ(a.normal_map.get(), surfaceOf(*world, "crate_b").normal_map.get());
+  EXPECT_EQ(a.base_color, Vec3(0.55, 0.36, 0.2));
+  EXPECT_NE(surfaceOf(*world, "ground").normal_map, nullptr);
+}
+
+// The world's diagnostics get the scene's warnings first, then what resolving found (a map
+// loaded once for shared resources is warned about once); nothing is printed.
+TEST(Instantiate, WarningsReachTheWorldsDiagnostics) {
+  const std::string dir = test::tempDir("warnings");
+  png::write(dir + "/grey.png", 2, 1, 3, 8, {128, 128, 128, 128, 128, 255});
+  const std::string path = dir + "/scene.json";
+  std::ofstream(path) << R"({"settings": {"frame": "world"}, "bodies": [{"name": "b",
+      "shapes": [{"type": "sphere", "radius": 0.1, "surface": {"normal_map": "grey.png"}}]}]})";
+  const SceneDesc scene = loadScene(path);
+  const auto shared = std::make_shared<SceneResources>();
+  testing::internal::CaptureStderr();
+  const auto first = instantiate(scene, {FrictionProviders::builtIn(), shared});
+  const auto second = instantiate(scene, {FrictionProviders::builtIn(), shared});
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+  const std::string deprecated = path + ": /settings/frame: deprecated, use \"frame_mode\"";
+  EXPECT_EQ(
+      first->diagnostics().warnings(),
+      (std::vector<std::string>{
+          deprecated, dir + "/grey.png: 50 % of texels are not unit normals; treated as flat"}));
+  EXPECT_EQ(second->diagnostics().warnings(), std::vector<std::string>{deprecated});
 }
 
 TEST(Instantiate, CorruptPngNamesShapeAndFile) {

@@ -4,6 +4,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
 
 #include "asperity/error.hpp"
 #include "asperity/scene/scene.hpp"
@@ -41,7 +44,7 @@ TEST(SceneParse, MinimalSceneTakesDefaults) {
   const WorldSettings defaults;
   EXPECT_EQ(scene.settings.dt, defaults.dt);
   EXPECT_EQ(scene.settings.gravity, Vec3(0.0, 0.0, -9.81));  // z up
-  EXPECT_EQ(scene.sampler, "cone");
+  EXPECT_EQ(scene.friction_provider, "cone");
   ASSERT_EQ(scene.bodies.size(), 2u);
   EXPECT_EQ(scene.bodies[0].type, BodyType::Static);
   EXPECT_EQ(scene.bodies[1].type, BodyType::Dynamic);
@@ -126,8 +129,10 @@ TEST(SceneParse, SettingsRanges) {
             "FILE: /settings/gravity/2: must be a number in [-1000000, 1000000], got 1e+300");
   EXPECT_EQ(loadError(R"({"settings": {"mu0": "0.2"}})"),
             "FILE: /settings/mu0: must be a number in [0, 100], got string \"0.2\"");
+  EXPECT_EQ(loadError(R"({"settings": {"friction_provider": ""}})"),
+            "FILE: /settings/friction_provider: must be a friction provider name, got \"\"");
   EXPECT_EQ(loadError(R"({"settings": {"sampler": ""}})"),
-            "FILE: /settings/sampler: must be a sampler name, got \"\"");
+            "FILE: /settings/sampler: must be a friction provider name, got \"\"");
 }
 
 TEST(SceneParse, HugeNumberLiteralIsASyntaxError) {
@@ -137,12 +142,68 @@ TEST(SceneParse, HugeNumberLiteralIsASyntaxError) {
 }
 
 TEST(SceneParse, BadEnumerationStrings) {
-  EXPECT_EQ(loadError(R"({"settings": {"friction": "cone"}})"),
-            "FILE: /settings/friction: must be one of \"coulomb\", \"box\", \"polygon\", got "
-            "string \"cone\"");
-  EXPECT_EQ(loadError(R"({"settings": {"frame": "tangent"}})"),
-            "FILE: /settings/frame: must be one of \"world\", \"body\", \"auto\", \"texture\", "
-            "got string \"tangent\"");
+  EXPECT_EQ(loadError(R"({"settings": {"limit_surface": "cone"}})"),
+            "FILE: /settings/limit_surface: must be one of \"coulomb\", \"box\", \"polygon\", "
+            "got string \"cone\"");
+  EXPECT_EQ(loadError(R"({"settings": {"frame_mode": "tangent"}})"),
+            "FILE: /settings/frame_mode: must be one of \"world\", \"body\", \"auto\", "
+            "\"texture\", got string \"tangent\"");
+  // A deprecated key's bad value is named at the key it was given under.
+  EXPECT_EQ(loadError(R"({"settings": {"frame": "tangent"}})")
+                .rfind("FILE: /settings/frame: must be one of", 0),
+            0u);
+}
+
+// The old names of renamed keys are still read, each with a warning naming the new key; saving
+// writes the new names only, which read back without a warning.
+TEST(SceneParse, DeprecatedKeysAreReadWithAWarning) {
+  const std::string path =
+      writeScene(std::string("{") + kTwoBodies +
+                 R"(, "settings": {"friction": "polygon", "frame": "auto", "sampler": "cpu"},
+          "loads": [{"body": "box", "point": [0.1, 0, 0]}]})");
+  const SceneDesc scene = loadScene(path);
+  EXPECT_EQ(scene.settings.limit_surface, LimitSurfaceKind::Polygon);
+  EXPECT_EQ(scene.settings.frame_mode, FrameMode::Auto);
+  EXPECT_EQ(scene.friction_provider, "cpu");
+  ASSERT_EQ(scene.loads.size(), 1u);
+  EXPECT_EQ(scene.loads[0].desc.local_point, Vec3(0.1, 0.0, 0.0));
+  EXPECT_EQ(scene.warnings, (std::vector<std::string>{
+                                path + ": /settings/friction: deprecated, use \"limit_surface\"",
+                                path + ": /settings/frame: deprecated, use \"frame_mode\"",
+                                path + ": /settings/sampler: deprecated, use \"friction_provider\"",
+                                path + ": /loads/0/point: deprecated, use \"local_point\""}));
+  const nlohmann::json saved = sceneToJson(scene);
+  for (const char* old_key : {"friction", "frame", "sampler"})
+    EXPECT_FALSE(saved["settings"].contains(old_key)) << old_key;
+  EXPECT_EQ(saved["settings"]["frame_mode"], "auto");
+  EXPECT_FALSE(saved["loads"][0].contains("point"));
+  const SceneDesc again = parseScene(saved, path);
+  EXPECT_TRUE(again.warnings.empty());
+  EXPECT_EQ(again.settings.limit_surface, LimitSurfaceKind::Polygon);
+  EXPECT_EQ(again.friction_provider, "cpu");
+  EXPECT_EQ(again.loads[0].desc.local_point, Vec3(0.1, 0.0, 0.0));
+  // Only the new names are offered for a misspelt key.
+  const std::string unknown = loadError(R"({"settings": {"dtt": 1}})");
+  EXPECT_NE(unknown.find("frame_mode"), std::string::npos) << unknown;
+  EXPECT_EQ(unknown.find(" frame,"), std::string::npos) << unknown;
+}
+
+// An old and a new name of one key together are an error at the old one.
+TEST(SceneParse, OldAndNewKeyTogetherIsAnError) {
+  EXPECT_EQ(loadError(R"({"settings": {"frame": "auto", "frame_mode": "world"}})"),
+            "FILE: /settings/frame: deprecated name of \"frame_mode\", which is also given: keep "
+            "only \"frame_mode\"");
+  EXPECT_EQ(loadError(R"({"settings": {"friction": "box", "limit_surface": "box"}})"),
+            "FILE: /settings/friction: deprecated name of \"limit_surface\", which is also given: "
+            "keep only \"limit_surface\"");
+  EXPECT_EQ(loadError(R"({"settings": {"sampler": "cpu", "friction_provider": "cpu"}})"),
+            "FILE: /settings/sampler: deprecated name of \"friction_provider\", which is also "
+            "given: keep only \"friction_provider\"");
+  EXPECT_EQ(
+      loadError(std::string("{") + kTwoBodies +
+                R"(, "loads": [{"body": "box", "point": [0, 0, 0], "local_point": [0, 0, 0]}]})"),
+      "FILE: /loads/0/point: deprecated name of \"local_point\", which is also given: keep "
+      "only \"local_point\"");
 }
 
 TEST(SceneParse, ZeroAxis) {

@@ -15,12 +15,12 @@ namespace {
 // A box sliding on a plane with constant friction mu0 = 0.5.
 SweepDesc slidingBox(int64_t samples) {
   SweepDesc d;
-  d.scene = nlohmann::json::parse(R"({
+  d.scene_json = R"({
     "settings": {"sampler": "constant", "mu0": 0.5, "dt": 0.005},
     "bodies": [
       {"name": "ground", "type": "static", "shapes": [{"type": "plane"}]},
       {"name": "box", "position": [0, 0, 0.1], "linear_velocity": [1, 0, 0],
-       "shapes": [{"type": "box", "half_extents": [0.1, 0.1, 0.1]}]}]})");
+       "shapes": [{"type": "box", "half_extents": [0.1, 0.1, 0.1]}]}]})";
   d.scene_file = "sliding_box.json";
   d.vary = {parseVariation("/bodies/*/linear_velocity/0=uniform(0.5,2)")};
   d.samples = samples;
@@ -77,23 +77,28 @@ TEST(SweepRun, BadSweepsAreRejectedNamingTheCulprit) {
   };
   SweepDesc d = slidingBox(2);
   d.samples = 0;
-  expectError(d, "--samples");
+  expectError(d, "samples: must be in 1..100000000, got 0");
   d = slidingBox(2);
   d.seconds = -1.0;
-  expectError(d, "--seconds");
+  expectError(d, "seconds: must be a finite number >= 0");
   d = slidingBox(2);
   d.measures = {"distance:nobody"};
   expectError(d, "no body named 'nobody'");
   d.measures = {"volume:box"};
-  expectError(d, "--measure 'volume:box'");
+  expectError(d, "measure 'volume:box'");
   // A drawn value the scene rejects names the sample and the JSON path.
   d = slidingBox(2);
   d.vary = {parseVariation("/bodies/1/shapes/0/half_extents/0=uniform(-2,-1)")};
   expectError(d, "sample 0: sliding_box.json: /bodies/1/shapes/0/half_extents/0");
   // The OpenGL sampler needs a context that pool threads do not have.
   d = slidingBox(2);
-  d.scene["settings"]["sampler"] = "gl";
+  const size_t sampler = d.scene_json.find("\"constant\"");
+  d.scene_json.replace(sampler, 10, "\"gl\"");
   expectError(d, "sampler \"gl\" cannot run in a sweep");
+  // A scene that is not JSON names its file.
+  d = slidingBox(2);
+  d.scene_json = "{";
+  expectError(d, "sliding_box.json: not valid JSON");
   d = slidingBox(2);
   const std::vector<int64_t> outside = {2};
   EXPECT_THROW(Sweep(d).runAll(1, outside), Error);

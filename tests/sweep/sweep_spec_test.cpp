@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <set>
 
 #include "asperity/error.hpp"
@@ -26,7 +27,7 @@ nlohmann::json twoBoxes() {
 
 SweepDesc descWith(std::vector<std::string> vary, int64_t samples = 16) {
   SweepDesc d;
-  d.scene = twoBoxes();
+  d.scene_json = twoBoxes().dump();
   d.scene_file = "two_boxes.json";
   for (const std::string& v : vary) d.vary.push_back(parseVariation(v));
   d.samples = samples;
@@ -51,8 +52,12 @@ TEST(SweepSpec, RejectsBadSpecsNamingThem) {
     try {
       parseVariation(bad);
       ADD_FAILURE() << bad << " was accepted";
-    } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find("--vary"), std::string::npos) << e.what();
+    } catch (const SweepError& e) {
+      // In the library's words; a front end names its own option for the field.
+      EXPECT_EQ(e.field(), SweepField::Vary) << e.what();
+      EXPECT_EQ(std::string(e.what()).rfind("variation '", 0), 0u) << e.what();
+      EXPECT_EQ(std::string(e.what()).find("--"), std::string::npos) << e.what();
+      EXPECT_EQ(e.messageNaming("--vary"), "--vary " + e.subject() + ": " + e.problem());
     }
   }
 }

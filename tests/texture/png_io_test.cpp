@@ -206,7 +206,7 @@ TEST(PngIo, DecodedValuesFollowTwoRgbMinusOne) {
 
 TEST(PngIo, TexelsThatAreNotNormalsReadFlatAndAreCounted) {
   // SPEC 10: mid grey (length 0.007), white (length 1.73) and a normal facing into the surface
-  // (z < 0) are not normals; they read flat, are counted and warned about once.
+  // (z < 0) are not normals; they read flat, are counted, and the caller warns about them.
   const std::string path = test::tempDir("png") + "/hygiene.png";
   png::write(path, 4, 1, 3, 8, {128, 128, 128, 255, 255, 255, 128, 128, 0, 200, 128, 220});
   NormalMapStats stats;
@@ -216,12 +216,18 @@ TEST(PngIo, TexelsThatAreNotNormalsReadFlatAndAreCounted) {
   EXPECT_EQ(stats.texels, 4u);
   EXPECT_EQ(stats.invalid, 3u);
   EXPECT_DOUBLE_EQ(stats.invalidFraction(), 0.75);
-  // Without a stats request the loader warns: one line naming the file and the share.
+  // Decoding prints nothing; the warning is one line naming the file and the share.
   testing::internal::CaptureStderr();
   loadNormalMapPng(path);
-  const std::string err = testing::internal::GetCapturedStderr();
-  EXPECT_EQ(err, "asperity: warning: " + path +
-                     ": 75 % of texels are not unit normals; treated as flat\n");
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
+  Diagnostics diagnostics;
+  warnInvalidTexels(path, stats, diagnostics);
+  ASSERT_EQ(diagnostics.warnings().size(), 1u);
+  EXPECT_EQ(diagnostics.warnings()[0],
+            path + ": 75 % of texels are not unit normals; treated as flat");
+  // A map whose texels are all normals gives no warning.
+  warnInvalidTexels(path, NormalMapStats{4, 0, 8}, diagnostics);
+  EXPECT_EQ(diagnostics.warnings().size(), 1u);
 }
 
 TEST(PngIo, DecodeFromMemoryAppliesScaleToXAndY) {

@@ -87,7 +87,7 @@ TEST(World, DistanceJointTakesInitialLengthAndFollowsItsCosine) {
   j.amplitude = 0.05;
   j.frequency = 1.0;
   j.phase = -0.5 * kPi;  // length(0) = rest length: no jump at the start
-  const int index = world.createJoint(j);
+  const JointId index = world.createJoint(j);
   EXPECT_TRUE(near(world.joints()[static_cast<size_t>(index)].rest_length, 0.3, 1e-12));
   double worst = 0.0;
   for (int i = 0; i < 100; ++i) {
@@ -200,7 +200,24 @@ TEST(World, LookupsAndClock) {
   const BodyId cube = world.createBody(boxDesc("cube", Vec3::Constant(0.1), {}));
   EXPECT_EQ(world.findBody("cube"), cube);
   EXPECT_EQ(world.findBody("nothing"), kNoBody);
-  EXPECT_EQ(world.bodyDesc(cube).name, "cube");
+  EXPECT_EQ(world.body(cube).name, "cube");
+  // Every create function returns its own typed id, indexing its list.
+  JointDesc j;
+  j.name = "j";
+  j.body_a = 0;
+  j.body_b = cube;
+  SpringDesc sd;
+  sd.name = "s";
+  sd.body = cube;
+  LoadDesc ld;
+  ld.name = "l";
+  ld.body = cube;
+  const JointId joint = world.createJoint(j);
+  const SpringId spring = world.addSpring(sd);
+  const LoadId load = world.addLoad(ld);
+  EXPECT_EQ(world.joints()[joint].name, "j");
+  EXPECT_EQ(world.springs()[spring].name, "s");
+  EXPECT_EQ(world.loads()[load].name, "l");
   world.step();
   world.step();
   EXPECT_EQ(world.stepCount(), 2);

@@ -105,6 +105,9 @@ asperity_status asperity_friction_create(const asperity_friction_settings* setti
                                          asperity_friction** out);
 void asperity_friction_destroy(asperity_friction* handle);
 const char* asperity_friction_error(const asperity_friction* handle);
+/* The warnings found while surfaces were loaded (a normal map with texels that are not
+ * normals...), one per line; "" when none. Valid until the next call on the handle. */
+const char* asperity_friction_warnings(asperity_friction* handle);
 
 asperity_status asperity_friction_add_object(asperity_friction* handle, const char* name,
                                              const asperity_shape* shapes, size_t shape_count,

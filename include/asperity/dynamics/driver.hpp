@@ -11,6 +11,13 @@
 
 namespace asperity {
 
+// A spring's and a load's index in their world, as World::addSpring and World::addLoad return
+// them (World::springs(), World::loads()).
+using SpringId = uint32_t;
+inline constexpr SpringId kNoSpring = 0xffffffffu;
+using LoadId = uint32_t;
+inline constexpr LoadId kNoLoad = 0xffffffffu;
+
 // A damped spring from a body point to a target: f = k (target(t) - p) - c (v_p - v_target).
 struct SpringDesc {
   std::string name;

@@ -22,6 +22,10 @@ inline constexpr std::pair<const char*, JointType> kJointTypeNames[] = {
     {"hinge", JointType::Hinge},
     {"fixed", JointType::Fixed}};
 
+// A joint's index in its world, as World::createJoint returns it.
+using JointId = uint32_t;
+inline constexpr JointId kNoJoint = 0xffffffffu;
+
 struct JointDesc {
   std::string name;
   JointType type = JointType::Ball;

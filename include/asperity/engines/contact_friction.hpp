@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "asperity/collision/contact.hpp"
+#include "asperity/diagnostics.hpp"
 #include "asperity/dynamics/body.hpp"
 #include "asperity/frames/contact_frames.hpp"
 #include "asperity/friction/limit_surfaces/box_limit.hpp"
@@ -46,7 +47,7 @@ struct ContactFrictionSettings {
 // (the frame whose pose the engine reports; shape transforms relative to it).
 struct ObjectDesc {
   std::string name;
-  std::vector<Shape> shapes;       // surfaces resolved (resolveSurface); planes, boxes, meshes...
+  std::vector<Shape> shapes;       // surfaces resolved (resolveSurfaces); planes, boxes, meshes...
   Vec3 frame_axis = Vec3::Zero();  // frame mode Body: t follows this object-local axis
 };
 
@@ -117,6 +118,8 @@ class ContactFriction {
 
   // Forgets kept patch samples and remembered senses (after teleporting objects).
   void forgetHistory();
+  // Warnings found while surfaces were resolved for it (the C face resolves them here).
+  Diagnostics& diagnostics();
   const ContactFrictionSettings& settings() const;
   // The provider's name and its times in the last compute (ms).
   std::string providerName() const;

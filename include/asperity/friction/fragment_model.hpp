@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "asperity/friction/directions.hpp"
+#include "asperity/math/simd_copy.hpp"
 #include "asperity/math/types.hpp"
 
 namespace asperity {
@@ -37,8 +38,10 @@ float fragmentMu(const Vec3f& m_contact_frame, Side side, const Vec2f& d,
 // The hot kernel: sums[k] += sum_i max(0, gx[i] dx_k + gy[i] dy_k) for every direction k.
 // gx, gy have equal length; sums has directions.size() entries (asperity::Error otherwise).
 // Any length and any direction count; float partial sums per chunk, flushed into double.
+// `copy` picks the compiled copy of the loop (the same bits either way).
 void accumulateDirectionalSums(std::span<const float> gx, std::span<const float> gy,
-                               std::span<const Vec2> directions, std::span<double> sums);
+                               std::span<const Vec2> directions, std::span<double> sums,
+                               SimdCopy copy = SimdCopy::Auto);
 
 // Eq. 7 from per-surface means (Eq. 8): mu_d = mu0 + k_A mubar_{d,A} + k_B mubar_{d,B}.
 // (Per-texel gain masks are folded into the fragments' g before averaging, with k = 1.)

@@ -12,6 +12,7 @@ struct PatchConeOptions {
   int directions = 16;
   PatchGains gains{0.0, 1.0, 1.0};
   float mu_max = kDefaultMuMax;
+  SimdCopy simd = SimdCopy::Auto;  // which copy of the summing loop runs
 };
 
 // `a` may be null (flat A). When both are given they may differ in size: each surface's mean

@@ -31,9 +31,11 @@ struct AssetMaterial {
   bool has_normal_texture = false;              // the material names a normal texture
   std::shared_ptr<const NormalMap> normal_map;  // null without one (or load_textures false)
   std::string normal_map_name;                  // file name, or "embedded texture N"
-  NormalMapStats normal_stats;                  // invalid texels found while decoding
-  double normal_scale = 1.0;                    // glTF normalTexture.scale, MTL -bm
-  int uv_set = 0;                               // texture coordinate set the map uses
+  // Invalid texels found while decoding (SPEC 10); importing prints nothing, the caller reports
+  // them (warnInvalidTexels, as the scene layer does).
+  NormalMapStats normal_stats;
+  double normal_scale = 1.0;  // glTF normalTexture.scale, MTL -bm
+  int uv_set = 0;             // texture coordinate set the map uses
   // glTF KHR_texture_transform of the normal texture, already applied to the mesh's uvs
   // (v up): uv' = uv_transform * (u, v, 1). Identity when the file has none.
   Eigen::Matrix<double, 2, 3> uv_transform = Eigen::Matrix<double, 2, 3>::Identity();

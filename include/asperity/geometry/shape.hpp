@@ -4,6 +4,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "asperity/geometry/surface.hpp"
@@ -52,5 +53,12 @@ struct Shape {
   double density = 1000.0;  // kg/m^3, for mass and inertia of dynamic bodies
   Surface surface;
 };
+
+// The resolver a C++ user calls before World::createBody for surfaces described by their
+// source alone: resolveSurface for every shape, e.g.
+//   resolveSurfaces(desc.shapes, world.diagnostics());
+// Scenes need not: instantiate() resolves theirs (equal surfaces sharing one map). Throws
+// asperity::Error naming the shape's index and the file.
+void resolveSurfaces(std::span<Shape> shapes, Diagnostics& diagnostics);
 
 }  // namespace asperity

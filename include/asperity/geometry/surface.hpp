@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "asperity/diagnostics.hpp"
 #include "asperity/texture/color_image.hpp"
 #include "asperity/texture/generators.hpp"
 #include "asperity/texture/normal_map.hpp"
@@ -26,14 +27,18 @@ struct SurfaceSource {
   GeneratorSpec generator;      // used when generator.name is not empty
   GreenConvention green = GreenConvention::OpenGL;
   std::string mask_file;  // optional gain mask PNG (grey); empty = none
+  // The entry of the scene's "materials" table the surface was read from (saved back as that
+  // name while the surface still equals the entry); empty = written out in full.
+  std::string material;
 
   // True when it names a normal map (a file or a generator).
   bool namesNormalMap() const { return !normal_map_file.empty() || !generator.name.empty(); }
 };
 
 // A surface as the step uses it: the source it was described by and the data resolved from it.
-// A world resolves what is still unresolved when a body is created (World::createBody), so a
-// surface built in code from a source alone is never silently flat.
+// A World decodes no files: scenes resolve their surfaces in instantiate(), code that describes
+// a surface by its source alone calls resolveSurfaces (shape.hpp) before World::createBody,
+// which refuses an unresolved surface rather than make it silently flat.
 struct Surface {
   SurfaceSource source;
 
@@ -50,15 +55,23 @@ struct Surface {
   std::shared_ptr<const ColorImage> base_color_texture;
 };
 
-// The normal map `source` names, read (with a warning on stderr when the map's slopes
-// contradict source.green) or generated; null when it names none. Paths are used as given.
-// Throws asperity::Error naming the file or the generator parameter.
-std::shared_ptr<const NormalMap> loadNormalMap(const SurfaceSource& source);
+// The normal map `source` names, read or generated; null when it names none. Paths are used as
+// given. A read map whose slopes contradict source.green, or whose texels are not all normals
+// (SPEC 10), is reported to `diagnostics`. Throws asperity::Error naming the file or the
+// generator parameter.
+std::shared_ptr<const NormalMap> loadNormalMap(const SurfaceSource& source,
+                                               Diagnostics& diagnostics);
 
 // A grey PNG as a gain mask (values in [0, 1]). Throws asperity::Error naming the file.
 GainMask loadGainMask(const std::string& path);
 
-// Fills the surface's normal map and mask from its source where they are still null.
-void resolveSurface(Surface& surface);
+// The resolver: fills the surface's normal map and mask from its source where they are still
+// null (reads the files, runs the generator). Warnings go to `diagnostics`. For a body's shapes
+// use resolveSurfaces (shape.hpp). Throws asperity::Error naming the file.
+void resolveSurface(Surface& surface, Diagnostics& diagnostics);
+
+// What the surface names but has not resolved (`normal map "x.png"`, `normal map generator
+// "sawtooth"`, `mask "m.png"`), or "" when nothing is missing.
+std::string unresolvedPart(const Surface& surface);
 
 }  // namespace asperity

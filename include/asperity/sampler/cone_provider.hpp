@@ -13,6 +13,7 @@
 
 #include "asperity/friction/directions.hpp"
 #include "asperity/friction/fragment_model.hpp"
+#include "asperity/math/simd_copy.hpp"
 #include "asperity/sampler/friction_provider.hpp"
 #include "asperity/texture/normal_map.hpp"
 
@@ -21,6 +22,9 @@ namespace asperity {
 class ConeProvider : public FrictionProvider {
  public:
   static constexpr int kConeDirections = 64;
+
+  // `simd`: which compiled copy of the cones' summing loop runs (the same bits either way).
+  explicit ConeProvider(SimdCopy simd = SimdCopy::Auto) : simd_(simd) {}
 
   std::string name() const override { return "cone"; }
   void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
@@ -35,6 +39,7 @@ class ConeProvider : public FrictionProvider {
     std::shared_ptr<const NormalMap> map;  // keeps the keyed address alive
     DirectionalMu cone;
   };
+  SimdCopy simd_;
   std::map<std::tuple<const NormalMap*, int, float>, Entry> cache_;
 };
 

@@ -16,6 +16,7 @@
 #include <memory>
 #include <vector>
 
+#include "asperity/math/simd_copy.hpp"
 #include "asperity/sampler/friction_provider.hpp"
 #include "asperity/sampler/patch_sampler.hpp"
 
@@ -26,9 +27,15 @@ class MeshCache;
 class PatchReuse;
 }  // namespace patch
 
+struct CpuSamplerOptions {
+  // Which compiled copy of the rasterising, shading and summing loops runs (the same bits
+  // either way; tests compare them).
+  SimdCopy simd = SimdCopy::Auto;
+};
+
 class CpuPatchSampler : public FrictionProvider {
  public:
-  CpuPatchSampler();
+  explicit CpuPatchSampler(const CpuSamplerOptions& options = {});
   ~CpuPatchSampler() override;
 
   std::string name() const override { return "cpu"; }
@@ -53,6 +60,7 @@ class CpuPatchSampler : public FrictionProvider {
   void sampleOnPool(std::span<const Body> bodies, std::span<Contact> contacts,
                     const FrictionSettings& settings);
 
+  CpuSamplerOptions options_;
   std::unique_ptr<patch::MeshCache> meshes_;           // shape meshes and BVHs, shared
   std::unique_ptr<State> state_;                       // the calling thread's scratch
   std::vector<std::unique_ptr<State>> worker_states_;  // one per pool thread

@@ -14,7 +14,7 @@ namespace asperity {
 
 // The friction provider of a world built in code and of a scene that names none: whole-texture
 // cones (sampler/cone_provider.hpp), anisotropic from the textures at almost no cost.
-inline constexpr const char* kDefaultSampler = "cone";
+inline constexpr const char* kDefaultFrictionProvider = "cone";
 
 // What every provider needs to know (SPEC 3, Eq. 7).
 struct FrictionSettings {

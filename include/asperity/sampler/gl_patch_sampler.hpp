@@ -18,7 +18,6 @@
 
 #include "asperity/sampler/friction_provider.hpp"
 #include "asperity/sampler/patch_sampler.hpp"
-#include "asperity/scene/friction_providers.hpp"
 
 namespace asperity {
 
@@ -69,8 +68,7 @@ class GlPatchSampler : public FrictionProvider {
   std::unique_ptr<Impl> impl_;
 };
 
-// Adds "gl" (a GlPatchSampler with these options) to a table of friction providers
-// (scene/friction_providers.hpp), e.g. the one given to instantiate().
-void addGlPatchSampler(FrictionProviders& providers, const GlSamplerOptions& options = {});
+// addGlPatchSampler, which offers this sampler to scenes as "gl", is in the scene layer:
+// asperity/scene/gl_sampler_provider.hpp.
 
 }  // namespace asperity

@@ -1,7 +1,8 @@
-// Friction providers by name, for scene files ("settings": {"sampler": "cone"}) and the CLI.
+// Friction providers by name, for scene files ("settings": {"friction_provider": "cone"}) and
+// the CLI (--sampler).
 // A FrictionProviders table belongs to whoever instantiates worlds (a command, a viewer, a test):
 // there is no process-wide registry. builtIn() holds the core library's "constant", "cone" and
-// "cpu"; other targets add theirs (the OpenGL sampler: addGlPatchSampler in asperity::gl).
+// "cpu"; other targets add theirs (the OpenGL sampler: addGlPatchSampler, gl_sampler_provider.hpp).
 #pragma once
 
 #include <functional>

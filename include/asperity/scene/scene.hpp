@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
 #include <optional>
@@ -19,6 +20,10 @@
 #include "asperity/world/world.hpp"
 
 namespace asperity {
+
+namespace scene {
+struct ResourcesAccess;  // src/scene/scene_resources.hpp
+}
 
 // Joints, springs and loads name their bodies; instantiate() turns the names into BodyIds
 // (the BodyId fields of `desc` are ignored).
@@ -60,9 +65,19 @@ struct SceneCamera {
   double fov_y = 35.0 * kPi / 180.0;  // vertical field of view (rad), in (0, pi)
 };
 
+// An entry of the scene's "materials" table: a surface that shapes name instead of spelling it
+// out ("surface": "oak"). Each such shape holds a copy, with Surface::source.material = the name.
+struct SceneMaterial {
+  Surface surface;
+  // The entry gives "base_color" (else a shape's asset shows its own colour, as inline).
+  bool names_base_color = false;
+};
+
 struct SceneDesc {
   WorldSettings settings;
-  std::string sampler = kDefaultSampler;  // friction provider (InstantiateOptions::providers)
+  // The friction provider by name ("friction_provider"; InstantiateOptions::providers).
+  std::string friction_provider = kDefaultFrictionProvider;
+  std::map<std::string, SceneMaterial> materials;  // "materials", by name
   std::vector<BodyDesc> bodies;  // shapes' normal maps unresolved (files / generator specs)
   std::vector<SceneJoint> joints;
   std::vector<SceneSpring> springs;
@@ -71,24 +86,25 @@ struct SceneDesc {
   std::optional<SceneCamera> camera;  // absent: front ends frame the bodies themselves
   std::string source_file;            // the file it came from, for messages ("" = built in code)
   std::string base_dir;               // folder that relative paths resolve against ("" = current)
+  // What loading found that is not an error (deprecated keys), one line each naming the file
+  // and the JSON pointer; instantiate() hands them to the world's diagnostics.
+  std::vector<std::string> warnings;
 };
 
 // Reads and validates a scene file. Throws asperity::Error `file: /pointer: what` (or
-// `file:line:column: what` for a JSON syntax error).
+// `file:line:column: what` for a JSON syntax error). Deprecated keys are read, with a warning
+// in SceneDesc::warnings (`file: /settings/frame: deprecated, use "frame_mode"`).
 SceneDesc loadScene(const std::string& path);
 // Validates parsed JSON; relative paths resolve against the folder of file_for_messages.
 SceneDesc parseScene(const nlohmann::json& json, const std::string& file_for_messages);
 
-// The JSON of a scene (every setting written out; surfaces keep their file or generator spec).
+// The JSON of a scene (every setting written out under its current key; surfaces keep their file
+// or generator spec, or the name of their material while they still equal its entry).
 nlohmann::json sceneToJson(const SceneDesc& scene);
 // Writes sceneToJson(scene) (indented, keys sorted). Relative file names are rewritten to
 // stay correct from the new file's folder. Throws asperity::Error naming the path on failure.
 void saveScene(const SceneDesc& scene, const std::string& path);
 
-// Builds a World: resolves normal maps (PNG files, generators; equal surfaces share one
-// NormalMap), masks and meshes, creates bodies, joints, springs and loads, and installs the
-// friction provider `scene.sampler` from options.providers. Throws asperity::Error naming the
-// file and culprit.
 // Normal maps, masks and asset meshes that instantiate() loads or generates, kept for reuse:
 // worlds instantiated with the same SceneResources share one copy of each, so an ensemble of
 // runs (asperity sweep) reads every file and generates every texture once. Worlds only read
@@ -100,10 +116,9 @@ class SceneResources {
   SceneResources(const SceneResources&) = delete;
   SceneResources& operator=(const SceneResources&) = delete;
 
-  struct Impl;  // defined by the scene library
-  Impl& impl() { return *impl_; }
-
  private:
+  friend struct scene::ResourcesAccess;  // the scene library's one way in
+  struct Impl;
   std::unique_ptr<Impl> impl_;
 };
 
@@ -117,6 +132,12 @@ struct InstantiateOptions {
   // Shared across instantiations when set; null: this world's own, dropped afterwards.
   std::shared_ptr<SceneResources> resources;
 };
+// Builds a World: resolves normal maps (PNG files, generators; equal surfaces share one
+// NormalMap), masks and meshes (the one place scenes resolve), creates bodies, joints, springs
+// and loads, and installs the friction provider `scene.friction_provider` from
+// options.providers. The world's diagnostics() holds scene.warnings and what resolving found
+// (a map loaded once for shared resources is warned about once). Throws asperity::Error naming
+// the file and culprit.
 std::unique_ptr<World> instantiate(const SceneDesc& scene, const InstantiateOptions& options = {});
 
 }  // namespace asperity

@@ -12,15 +12,40 @@
 
 #include <cstdint>
 #include <memory>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "asperity/error.hpp"
 #include "asperity/math/types.hpp"
 #include "asperity/scene/scene.hpp"
 
 namespace asperity {
+
+// The part of a sweep's description an error concerns. The library names them in its own
+// words (variation, measure, samples, seconds, threads); a front end names its own option for
+// each (the CLI: --vary, --measure, --samples, --seconds, --threads).
+enum class SweepField { Vary, Measures, Samples, Seconds, Threads };
+
+// A sweep's description rejected. what() reads "WORD SUBJECT: PROBLEM", e.g.
+// "variation '/a=beta(1,2)': unknown distribution 'beta' (available: ...)" or
+// "samples: must be in 1..100000000, got 0" (no subject for a number).
+class SweepError : public Error {
+ public:
+  SweepError(SweepField field, std::string subject, std::string problem);
+
+  SweepField field() const { return field_; }
+  // The culprit as written ("'/a=beta(1,2)'", "/bodies/*/x", "'volume:box'"); empty for a number.
+  const std::string& subject() const { return subject_; }
+  const std::string& problem() const { return problem_; }
+  // The message with the field called `name` instead (e.g. "--vary '/a=beta(1,2)': ...").
+  std::string messageNaming(const std::string& name) const;
+
+ private:
+  SweepField field_;
+  std::string subject_, problem_;
+};
 
 enum class Distribution { Uniform, Normal, Choice, Grid };
 
@@ -30,13 +55,14 @@ struct Variation {
   std::vector<double> args;  // uniform: a, b; normal: mean, sd; choice: values; grid: a, b, n
 };
 
-// Parses "PATH=SPEC". Throws asperity::Error "--vary 'TEXT': what is wrong".
+// Parses "PATH=SPEC". Throws SweepError (SweepField::Vary) "variation 'TEXT': what is wrong".
 Variation parseVariation(const std::string& text);
 // Parses SPEC for PATH. Throws like parseVariation.
 Variation parseVariation(const std::string& path, const std::string& spec);
 
 // The JSON pointers a path matches in `scene` (every `*` expanded, in array order). Throws
-// asperity::Error "--vary PATH: ..." when a segment is missing or a match is not a number.
+// SweepError (SweepField::Vary) "variation PATH: ..." when a segment is missing or a match is
+// not a number.
 std::vector<std::string> expandPath(const nlohmann::json& scene, const std::string& path);
 
 // Built-in measures, named "KIND:BODY": distance (m the body frame's origin moved from its
@@ -45,7 +71,7 @@ std::vector<std::string> expandPath(const nlohmann::json& scene, const std::stri
 inline constexpr const char* kMeasureKinds[] = {"distance", "speed", "angle", "height"};
 
 struct SweepDesc {
-  nlohmann::json scene;    // the scene file's JSON
+  std::string scene_json;  // the scene file's text (JSON)
   std::string scene_file;  // for messages; relative paths resolve against its folder
   std::vector<Variation> vary;
   int64_t samples = 1;
@@ -70,8 +96,8 @@ struct SampleResult {
 // The plan of a sweep, checked: paths expanded, measures resolved, body names read.
 class Sweep {
  public:
-  // Throws asperity::Error for a bad variation, path, sample count, time or measure, or a
-  // scene that does not load.
+  // Throws SweepError for a bad variation, path, sample count, time or measure, and
+  // asperity::Error for a scene that does not parse or load.
   explicit Sweep(SweepDesc desc);
 
   const SweepDesc& desc() const { return desc_; }
@@ -83,6 +109,7 @@ class Sweep {
   SampleResult run(int64_t index) const;
   // Runs the given samples (all when empty) on `threads` threads of a oneTBB pool (0 = every
   // core); results come back in the order of `indices`, identical for any thread count.
+  // Throws SweepError (SweepField::Threads) for a negative thread count.
   std::vector<SampleResult> runAll(int threads, std::span<const int64_t> indices = {}) const;
 
   // Column names of the table: sample, the variations' paths, each body's
@@ -93,6 +120,7 @@ class Sweep {
 
  private:
   SweepDesc desc_;
+  std::shared_ptr<const nlohmann::json> scene_;     // desc_.scene_json parsed
   std::vector<std::vector<std::string>> pointers_;  // per variation, its expanded pointers
   std::vector<std::string> body_names_;
   std::vector<std::pair<int, size_t>> measures_;  // (kind index, body index)

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "asperity/diagnostics.hpp"
 #include "asperity/texture/normal_map.hpp"
 
 namespace asperity {
@@ -35,19 +36,20 @@ struct NormalMapStats {
   }
 };
 
-// Prints `asperity: warning: NAME: P % of texels are not unit normals; treated as flat` on
-// stderr when the map has any invalid texel (once per loaded map).
-void warnInvalidTexels(const std::string& name, const NormalMapStats& stats);
+// Warns `NAME: P % of texels are not unit normals; treated as flat` when the map has any
+// invalid texel (callers do so once per loaded map).
+void warnInvalidTexels(const std::string& name, const NormalMapStats& stats,
+                       Diagnostics& diagnostics);
 
 // Throws asperity::Error naming the file and the problem (missing, corrupt, grayscale, palette,
-// zero-sized, over kMaxTextureSize, ...). Invalid texels become flat; they are warned about
-// (warnInvalidTexels) unless `stats` is given, when the caller reports them.
+// zero-sized, over kMaxTextureSize, ...). Invalid texels become flat and are counted in `stats`
+// when given; the caller reports them (warnInvalidTexels): decoding prints nothing.
 NormalMap loadNormalMapPng(const std::string& path, GreenConvention green = GreenConvention::OpenGL,
                            NormalMapStats* stats = nullptr);
 
 // A normal map from an encoded image in memory (PNG, JPEG, BMP or TGA, as embedded in a .glb or
 // a data URI). `scale` multiplies x and y before normalising (glTF normalTexture.scale, MTL
-// -bm). `name` appears in errors and the invalid-texel warning (given unless `stats` is).
+// -bm). `name` appears in errors; invalid texels are counted in `stats` as for loadNormalMapPng.
 NormalMap decodeNormalMap(const std::vector<uint8_t>& bytes, const std::string& name,
                           GreenConvention green = GreenConvention::OpenGL, double scale = 1.0,
                           NormalMapStats* stats = nullptr);

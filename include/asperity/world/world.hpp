@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "asperity/collision/contact.hpp"
+#include "asperity/diagnostics.hpp"
 #include "asperity/dynamics/body.hpp"
 #include "asperity/dynamics/driver.hpp"
 #include "asperity/dynamics/joint.hpp"
@@ -117,21 +118,24 @@ class World {
   World(const World&) = delete;
   World& operator=(const World&) = delete;
 
-  // Adds a body; mass and inertia come from its shapes (geometry/mass.hpp). Throws
-  // asperity::Error naming the body for a dynamic body without volume or a bad pose.
+  // Adds a body; mass and inertia come from its shapes (geometry/mass.hpp). Its surfaces must
+  // be resolved (resolveSurfaces, or a scene's instantiate()): the world reads no files.
+  // Throws asperity::Error naming the body for an unresolved surface, a dynamic body without
+  // volume or a bad pose.
   BodyId createBody(const BodyDesc& desc);
-  // Adds a joint and returns its index. Throws asperity::Error for unknown bodies.
-  int createJoint(const JointDesc& desc);
-  // Adds a spring and returns its index. Throws asperity::Error for an unknown body.
-  int addSpring(const SpringDesc& desc);
-  // Adds a timed load. Throws asperity::Error for an unknown body.
-  void addLoad(const LoadDesc& desc);
+  // Adds a joint; its id indexes joints(). Throws asperity::Error for unknown bodies.
+  JointId createJoint(const JointDesc& desc);
+  // Adds a spring; its id indexes springs(). Throws asperity::Error for an unknown body.
+  SpringId addSpring(const SpringDesc& desc);
+  // Adds a timed load; its id indexes loads() until removeFinishedLoads() drops an earlier
+  // one. Throws asperity::Error for an unknown body.
+  LoadId addLoad(const LoadDesc& desc);
   // Drops the loads that can no longer act (forces and torques past their end, impulses already
   // fired), so that a controller adding loads step after step keeps the list short. Returns
   // how many it dropped. The state a step produces does not change.
   size_t removeFinishedLoads();
 
-  // The friction stage (default: ConeProvider, kDefaultSampler, as for scenes).
+  // The friction stage (default: ConeProvider, kDefaultFrictionProvider, as for scenes).
   void setFrictionProvider(std::unique_ptr<FrictionProvider> provider);
   FrictionProvider& frictionProvider() { return *provider_; }
   void setFrameCallback(FrameCallback callback) { frame_callback_ = std::move(callback); }
@@ -157,8 +161,6 @@ class World {
   // kept patch samples (FrictionSettings::reuse_pixels) do not see such changes.
   Body& body(BodyId id);
   const Body& body(BodyId id) const;
-  // The description a body was created from (scenes save it back).
-  const BodyDesc& bodyDesc(BodyId id) const;
   // The body with this name, or kNoBody.
   BodyId findBody(std::string_view name) const;
 
@@ -167,10 +169,14 @@ class World {
   std::span<const SpringDesc> springs() const { return springs_; }
   std::span<const LoadDesc> loads() const { return loads_; }
   // Position error of joint i (m): distance between the anchors, or from the target length.
-  double jointError(int index) const;
+  double jointError(JointId id) const;
 
   const std::vector<Contact>& contacts() const { return contacts_; }
   const StepProfile& profile() const { return profile_; }
+  // The warnings of this world (deprecated scene keys, normal maps that are not all normals):
+  // the library prints nothing; front ends read them or set a sink.
+  Diagnostics& diagnostics() { return diagnostics_; }
+  const Diagnostics& diagnostics() const { return diagnostics_; }
   WorldSettings& settings() { return settings_; }
   const WorldSettings& settings() const { return settings_; }
 
@@ -200,7 +206,6 @@ class World {
 
   WorldSettings settings_;
   std::vector<Body> bodies_;
-  std::vector<BodyDesc> descs_;
   std::vector<JointDesc> joints_;
   std::vector<Quat> joint_rest_rotation_;  // fixed joints: q_a^-1 q_b at creation
   std::vector<SpringDesc> springs_;
@@ -212,6 +217,7 @@ class World {
   std::unique_ptr<ThreadPool> pool_;  // for settings_.threads, made by the first step
   FrameCallback frame_callback_;
   StepProfile profile_;
+  Diagnostics diagnostics_;
   bool bodies_changed_ = true;
   double slop_ = 0.0;  // resolved linear slop (m)
   double time_ = 0.0;

@@ -17,7 +17,6 @@
 #include "asperity/error.hpp"
 #include "asperity/friction/directions.hpp"
 #include "asperity/gl/context.hpp"
-#include "asperity/scene/friction_providers.hpp"
 #include "parallel/thread_pool.hpp"
 #include "sampler/gl/gl_patch_resources.hpp"
 #include "sampler/patch_common.hpp"
@@ -123,7 +122,7 @@ struct SavedState {
 
 struct GlPatchSampler::Impl {
   GlSamplerOptions options;
-  const ThreadPool* pool = nullptr;  // collects triangles, finishes sums (setThreadPool)
+  const ThreadPool* pool = nullptr;        // collects triangles, finishes sums (setThreadPool)
   std::unique_ptr<gl::GlContext> context;  // declared first: destroyed last
   glpatch::Atlas atlas;
   std::array<glpatch::Readback, 2> readbacks;
@@ -260,8 +259,7 @@ void GlPatchSampler::Impl::collectChunk(std::span<const Body> bodies,
         const Shape& shape = range.body->shapes[static_cast<size_t>(k)];
         const size_t first = chunk.vertices.size();
         patch::collectTriangles(volume, shape, patch::shapePose(*range.body, k),
-                                s == 0 ? Side::A : Side::B, meshes, chunk.scratch,
-                                chunk.vertices);
+                                s == 0 ? Side::A : Side::B, meshes, chunk.scratch, chunk.vertices);
         if (chunk.vertices.size() == first) continue;
         const int tile = static_cast<int>(2 * c) + s;
         const TileVertex tv{
@@ -512,10 +510,6 @@ void GlPatchSampler::finishCoefficients() {
   im.call.active = false;
   im.reuse.remember(im.call.bodies, im.call.contacts, im.call.kept);
   im.patch_ms = im.call.busy_ms + msSince(start) - im.averaging_ms;
-}
-
-void addGlPatchSampler(FrictionProviders& providers, const GlSamplerOptions& options) {
-  providers.add("gl", [options] { return std::make_unique<GlPatchSampler>(options); });
 }
 
 }  // namespace asperity

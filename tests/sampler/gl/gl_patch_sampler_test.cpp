@@ -7,6 +7,7 @@
 
 #include "asperity/gl/context.hpp"
 #include "asperity/sampler/cpu_patch_sampler.hpp"
+#include "asperity/scene/gl_sampler_provider.hpp"
 #include "asperity/scene/scene.hpp"
 #include "parallel/thread_pool.hpp"
 #include "sampler/sampler_suite.hpp"
@@ -228,9 +229,9 @@ TEST(GlPatchSampler, WorldSetsUpTheSolverWhileItRendersWithTheSameBits) {
   InstantiateOptions options;
   addGlPatchSampler(options.providers);
   options.providers.add("gl-whole", [] { return std::make_unique<WholeCalls>(); });
-  scene.sampler = "gl";
+  scene.friction_provider = "gl";
   const std::unique_ptr<World> overlapped = instantiate(scene, options);
-  scene.sampler = "gl-whole";
+  scene.friction_provider = "gl-whole";
   const std::unique_ptr<World> whole = instantiate(scene, options);
   size_t contacts = 0;
   for (int i = 0; i < 40; ++i) {
@@ -248,7 +249,7 @@ TEST(GlPatchSampler, WorldStateIsTheSameOnOneAndFourThreads) {
   // mesh cache) and finishes the sums, the calling thread keeps every GL call.
   for (const char* name : {"stacking.json", "examples/shapes.json", "examples/meshes.json"}) {
     SceneDesc scene = loadScene(test::sourcePath(std::string("scenes/") + name));
-    scene.sampler = "gl";
+    scene.friction_provider = "gl";
     InstantiateOptions options;
     addGlPatchSampler(options.providers);
     const std::unique_ptr<World> one = instantiate(scene, options);

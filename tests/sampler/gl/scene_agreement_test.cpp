@@ -35,7 +35,7 @@ std::vector<std::string> repositoryScenes() {
 // The scene stepped with the CPU sampler until it has contacts (at most `max_steps` steps).
 std::unique_ptr<World> steppedToContact(const std::string& path, int max_steps) {
   SceneDesc scene = loadScene(path);
-  scene.sampler = "cpu";
+  scene.friction_provider = "cpu";
   std::unique_ptr<World> world = instantiate(scene);
   for (int i = 0; i < max_steps && world->contacts().empty(); ++i) world->step();
   for (int i = 0; i < 5; ++i) world->step();  // let resting contacts settle in
