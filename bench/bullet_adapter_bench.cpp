@@ -33,7 +33,7 @@ Surface textured(const std::string& generator) {
 
 SceneDesc boxesOnStone(bool sliding) {
   SceneDesc scene;
-  scene.sampler = "cpu";
+  scene.friction_provider = "cpu";
   scene.settings.friction.reuse_pixels = 0.0;
   BodyDesc ground = boxDesc("ground", Vec3(3, 3, 0.05), {Vec3(0, 0, -0.05), Quat::Identity()});
   ground.type = BodyType::Static;

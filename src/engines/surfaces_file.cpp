@@ -23,7 +23,7 @@ SurfacesFile loadSurfacesFile(const std::string& path) {
   for (const auto& entry : table.value().items()) {
     if (entry.key().empty()) table.fail("an object name must not be empty");
     Surface surface = scene::parseSurfaceObject(table.object(entry.key()), base_dir);
-    surface.normal_map = cache.normalMap(surface);
+    surface.normal_map = cache.normalMap(surface, out.diagnostics);
     surface.mask = cache.mask(surface.source.mask_file);
     out.surfaces.emplace(entry.key(), std::move(surface));
   }

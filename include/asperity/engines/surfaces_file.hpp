@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "asperity/diagnostics.hpp"
 #include "asperity/error.hpp"
 #include "asperity/geometry/surface.hpp"
 
@@ -22,6 +23,7 @@ namespace asperity {
 struct SurfacesFile {
   std::string path;                         // the file it was read from, for messages
   std::map<std::string, Surface> surfaces;  // by object name; normal maps resolved
+  Diagnostics diagnostics;                  // warnings found while the maps loaded
 };
 
 // Reads, checks and resolves a surfaces file (normal maps read or generated). Throws

@@ -227,7 +227,7 @@ ObjectId BulletFriction::attach(btCollisionObject* object, const std::string& na
   desc.name = name;
   desc.shapes =
       shapesOfBulletShape(*object->getCollisionShape(), surface, "bullet object '" + name + "'");
-  for (Shape& s : desc.shapes) resolveSurface(s.surface);
+  resolveSurfaces(desc.shapes, impl_->friction.diagnostics());
   return impl_->add(object, desc);
 }
 

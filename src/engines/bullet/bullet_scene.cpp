@@ -83,7 +83,7 @@ ContactFrictionSettings contactFrictionSettings(const SceneDesc& scene) {
   const WorldSettings& w = scene.settings;
   ContactFrictionSettings s;
   s.friction = w.friction;
-  s.provider = scene.sampler;
+  s.provider = scene.friction_provider;
   s.frame_mode = w.frame_mode;
   s.world_axis = w.world_axis;
   s.fallback_axis = w.fallback_axis;
@@ -104,6 +104,7 @@ struct BulletScene::Impl {
   std::unique_ptr<BulletFriction> friction;
   double dt = 0.01;
   int steps = 0;
+  Diagnostics diagnostics;  // warnings found while the scene's maps loaded
 
   ~Impl() {
     friction.reset();
@@ -122,7 +123,7 @@ void BulletScene::Impl::addBodies(const SceneDesc& scene, btScalar body_friction
     try {
       // Surfaces resolved as instantiate() resolves them (paths relative to the scene).
       for (Shape& s : desc.shapes) {
-        s.surface.normal_map = cache.normalMap(s.surface);
+        s.surface.normal_map = cache.normalMap(s.surface, diagnostics);
         s.surface.mask = cache.mask(s.surface.source.mask_file);
       }
       const Body body = makeBody(desc);

@@ -40,7 +40,7 @@ struct FlatPair {
   FlatPair(SceneDesc scene, const std::string& sampler)
       : asperity(withSampler(scene, sampler), autoFrames()), plain(scene, withAsperity(false)) {}
   static SceneDesc withSampler(SceneDesc scene, const std::string& sampler) {
-    scene.sampler = sampler;
+    scene.friction_provider = sampler;
     scene.settings.auto_frame_speed = kBulletSlidingSpeed;
     return scene;
   }

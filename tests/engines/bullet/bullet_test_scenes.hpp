@@ -13,7 +13,7 @@ namespace asperity::test {
 inline SceneDesc groundScene(const Surface& surface, BodyDesc body,
                              const std::string& sampler = "cpu") {
   SceneDesc scene;
-  scene.sampler = sampler;
+  scene.friction_provider = sampler;
   BodyDesc ground = boxDesc("ground", Vec3(1.5, 1.5, 0.05), {Vec3(0, 0, -0.05), Quat::Identity()});
   ground.type = BodyType::Static;
   ground.shapes[0].surface = surface;
