@@ -1,11 +1,12 @@
 # Installs the libraries and public headers so that an outside project can
-# find_package(asperity) and link asperity::asperity, asperity::gl and asperity::render
-# (examples/cpp/, built against an installed copy by the InstallAndBuildExamples test).
+# find_package(asperity) and link asperity::asperity, asperity::gl, asperity::render and
+# asperity::bullet (examples/cpp/, built against an installed copy by the
+# InstallAndBuildExamples test).
 # Component `cpp`; the Python module installs as component `python` (python/CMakeLists.txt).
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 set(asperity_installed_targets asperity)
-foreach(optional asperity_gl asperity_render)
+foreach(optional asperity_gl asperity_render asperity_bullet)
   if(TARGET ${optional})
     list(APPEND asperity_installed_targets ${optional})
   endif()

@@ -262,4 +262,9 @@ void parseBodies(JsonReader& root, SceneDesc& scene) {
   }
 }
 
+// The reader of a shape's "surface", for files that are not scenes (scene_common.hpp).
+Surface parseSurfaceObject(JsonReader r, const std::string& base_dir) {
+  return parseSurface(std::move(r), base_dir);
+}
+
 }  // namespace asperity::scene

@@ -31,5 +31,8 @@ void parseMaterials(JsonReader& root, SceneDesc& scene);
 void parseBodies(JsonReader& root, SceneDesc& scene);
 // Writes one body back (with its meshes from scene.meshes).
 nlohmann::json bodyToJson(const SceneDesc& scene, size_t index);
+// A surface object as a shape's "surface" holds it, read outside a scene (the surfaces files
+// of other engines' adapters, engines/surfaces_file.cpp).
+Surface parseSurfaceObject(JsonReader r, const std::string& base_dir);
 
 }  // namespace asperity::scene

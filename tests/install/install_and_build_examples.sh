@@ -1,6 +1,6 @@
 #!/bin/sh
 # Installs the built libraries and headers into a temporary prefix, builds examples/cpp/ against
-# them with find_package(asperity) as an outside project would, and runs the three programs.
+# them with find_package(asperity) as an outside project would, and runs the programs.
 #   install_and_build_examples.sh BUILD_DIR CXX_COMPILER HAVE_GL
 set -eu
 build_dir=$1
@@ -18,6 +18,7 @@ cmake --build "$work/build" -j2 > "$work/build.log" || { cat "$work/build.log"; 
 
 "$work/build/sawtooth_box"
 "$work/build/scene_contacts" "$source_dir/scenes/stacking.json" 50 | head -5
+"$work/build/bullet_sawtooth"
 if [ "$have_gl" = ON ]; then
   "$work/build/gl_sampler"
 fi
