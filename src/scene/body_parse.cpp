@@ -75,6 +75,8 @@ GeneratorSpec parseGenerator(JsonReader r, const std::string& base_dir) {
   return spec;
 }
 
+}  // namespace
+
 // "surface": the normal map (file or generator), its mapping, gain k and mask (SPEC 3, 6), and
 // the base colour it is drawn with.
 Surface parseSurface(JsonReader r, const std::string& base_dir) {
@@ -100,6 +102,8 @@ Surface parseSurface(JsonReader r, const std::string& base_dir) {
   r.finish();
   return s;
 }
+
+namespace {
 
 // The mesh of a convex hull or triangle mesh shape: asset file, scale, simplification target,
 // node.

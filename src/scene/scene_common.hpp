@@ -25,6 +25,10 @@ std::string resolvePath(const std::string& base_dir, const std::string& file);
 double degreesFromRadians(double radians);
 double radiansFromDegrees(double degrees);
 
+// A "surface" object (normal map file or generator, gain, texture size and rotation, mask, base
+// colour); files resolve against base_dir and must exist. Also read by the engines' surfaces
+// files (asperity/engines/engine_surfaces.hpp).
+Surface parseSurface(JsonReader r, const std::string& base_dir);
 // Parses the "bodies" array (shapes, surfaces, OBJ meshes), checking names are unique.
 void parseBodies(JsonReader& root, SceneDesc& scene);
 // Writes one body back (with its meshes from scene.meshes).
