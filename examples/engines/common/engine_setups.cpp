@@ -80,6 +80,22 @@ SceneDesc gaussianLaunch(double speed) {
   return scene;
 }
 
+SceneDesc sawtoothIncline(double degrees, double speed) {
+  SceneDesc scene = sawtoothLaunch();
+  const Surface sawtooth = bodyNamed(scene, "plane_ramp").shapes[0].surface;
+  scene.bodies.clear();
+  // The slab's +x turned up by `degrees` about y; the box on its top face, 1 m from its centre.
+  const Quat tilt(Eigen::AngleAxisd(-degrees * kPi / 180.0, Vec3::UnitY()));
+  BodyDesc slope = slab("slab", Vec3::Zero(), Vec3(2.0, 0.5, 0.05), sawtooth);
+  slope.pose = {tilt * Vec3(0.0, 0.0, -0.05), tilt};
+  scene.bodies.push_back(slope);
+  const Vec3 uphill = tilt * Vec3::UnitX();
+  BodyDesc box = launchedBox("box_uphill", tilt * Vec3(-1.0, 0.0, 0.1), speed * uphill);
+  box.pose.rotation = tilt;
+  scene.bodies.push_back(box);
+  return scene;
+}
+
 SceneDesc sawtoothBoxes(int count) {
   SceneDesc scene = sawtoothLaunch();
   const Surface sawtooth = bodyNamed(scene, "plane_ramp").shapes[0].surface;
@@ -157,16 +173,18 @@ DemoOptions parseDemoOptions(const std::vector<std::string>& args) {
       if (arg == "--seconds") o.seconds = std::stod(value);
     } else {
       throw Error("unknown argument \"" + arg +
-                  "\" (expected --json, --compare, --scene sawtooth|materials, --seconds S)");
+                  "\" (expected --json, --compare, --scene sawtooth|materials|incline, "
+                  "--seconds S)");
     }
   }
-  if (o.scene != "sawtooth" && o.scene != "materials")
-    throw Error("--scene must be sawtooth or materials, got \"" + o.scene + "\"");
+  if (o.scene != "sawtooth" && o.scene != "materials" && o.scene != "incline")
+    throw Error("--scene must be sawtooth, materials or incline, got \"" + o.scene + "\"");
   if (!(o.seconds > 0.0)) throw Error("--seconds must be positive");
   return o;
 }
 
 SceneDesc demoScene(const DemoOptions& options) {
+  if (options.scene == "incline") return sawtoothIncline();
   return options.scene == "materials" ? boxesOnMaterials() : sawtoothLaunch();
 }
 

@@ -28,6 +28,13 @@ SceneDesc boxesOnMaterials();
 // two 0.2 m boxes launched at `speed` m/s: box_along (+x, the smooth axis) and box_across (+y).
 SceneDesc gaussianLaunch(double speed = 1.0);
 
+// Where the symmetric cones of MuJoCo and ODE are wrong (SPEC 11): the sawtooth slab tilted by
+// `degrees` so that its ramps rise uphill (+x), and box_uphill launched up it at `speed` m/s.
+// The box slides up the ramps, stops, and gravity then pulls it against the steep faces, which
+// hold it (Asperity's box limit); an engine that keeps the coefficient of the sense it last slid
+// in lets it creep back down.
+SceneDesc sawtoothIncline(double degrees = 35.0, double speed = 1.0);
+
 // The same sawtooth slab as sawtoothLaunch with `count` boxes in rows, each launched at 1 m/s
 // along +x (the benchmark's scene).
 SceneDesc sawtoothBoxes(int count);
@@ -47,7 +54,7 @@ Distances asperityDistances(const SceneDesc& scene, double seconds);
 // {"ramps": m, ...}: each body's distance under its name without the "box_" prefix.
 std::string distancesJson(const Distances& distances);
 
-// The demos' command line: --json, --compare, --scene sawtooth|materials, --seconds.
+// The demos' command line: --json, --compare, --scene sawtooth|materials|incline, --seconds.
 struct DemoOptions {
   bool json = false;
   bool compare = false;  // also the engine alone and Asperity's own World

@@ -17,12 +17,12 @@ int main(int argc, char** argv) {
   // --pyramidal is this demo's own; the rest is shared with the other engines' demos.
   std::vector<std::string> args(argv + 1, argv + argc);
   const auto pyramidal = std::find(args.begin(), args.end(), "--pyramidal");
-  const auto cone =
-      pyramidal == args.end() ? mjcf_scene::Cone::Elliptic : mjcf_scene::Cone::Pyramidal;
+  mjcf_scene::MjcfOptions options;
+  if (pyramidal != args.end()) options.cone = mjcf_scene::Cone::Pyramidal;
   if (pyramidal != args.end()) args.erase(pyramidal);
   // The scene as MJCF plus a surfaces file, stepped by MuJoCo.
-  const auto run = [cone](const SceneDesc& scene, double seconds, bool with_asperity) {
-    return mjcf_scene::run(scene, seconds, with_asperity, cone).positions;
+  const auto run = [options](const SceneDesc& scene, double seconds, bool with_asperity) {
+    return mjcf_scene::run(scene, seconds, with_asperity, options).positions;
   };
   return engine_setups::demoMain("asperity-mujoco-demo",
                                  std::string("MuJoCo ") + mj_versionString(), args, run);

@@ -59,8 +59,15 @@ std::string geomElement(const BodyDesc& body, const Shape& s, const Transform& p
          numbers({s.density}) + "\"/>";
 }
 
+// The joints of a dynamic body: free, or three slides that keep it from turning.
+std::string joints(const MjcfOptions& options) {
+  if (!options.translation_only) return "<freejoint/>";
+  return "<joint type=\"slide\" axis=\"1 0 0\"/><joint type=\"slide\" axis=\"0 1 0\"/>"
+         "<joint type=\"slide\" axis=\"0 0 1\"/>";
+}
+
 // One body: a world geom when static, else a free body with its geom.
-std::string bodyElement(const BodyDesc& b) {
+std::string bodyElement(const BodyDesc& b, const MjcfOptions& options) {
   if (b.shapes.size() != 1)
     throw Error("body \"" + b.name + "\": MuJoCo's side takes one shape per body");
   const Shape& s = b.shapes[0];
@@ -69,12 +76,13 @@ std::string bodyElement(const BodyDesc& b) {
     throw Error("body \"" + b.name + "\": MuJoCo's side takes static and dynamic bodies");
   const Vec3& p = b.pose.position;
   return "    <body name=\"" + b.name + "\" pos=\"" + numbers({p.x(), p.y(), p.z()}) +
-         "\" quat=\"" + quatText(b.pose.rotation) + "\"><freejoint/>" + geomElement(b, s, s.local) +
-         "</body>\n";
+         "\" quat=\"" + quatText(b.pose.rotation) + "\">" + joints(options) +
+         geomElement(b, s, s.local) + "</body>\n";
 }
 
-// Keyframe "start": each free body's pose and velocity (angular in its own frame).
-std::string keyframe(const SceneDesc& scene) {
+// Keyframe "start": each free body's pose and velocity (angular in its own frame); slide
+// joints start at 0 with the linear velocity.
+std::string keyframe(const SceneDesc& scene, const MjcfOptions& options) {
   std::string qpos, qvel;
   for (const BodyDesc& b : scene.bodies) {
     if (b.type != BodyType::Dynamic) continue;
@@ -82,10 +90,14 @@ std::string keyframe(const SceneDesc& scene) {
     const Vec3& v = b.linear_velocity;
     const Vec3 w = b.pose.rotation.conjugate() * b.angular_velocity;
     const Quat& q = b.pose.rotation;
-    qpos.append(qpos.empty() ? "" : " ")
-        .append(numbers({p.x(), p.y(), p.z(), q.w(), q.x(), q.y(), q.z()}));
-    qvel.append(qvel.empty() ? "" : " ")
-        .append(numbers({v.x(), v.y(), v.z(), w.x(), w.y(), w.z()}));
+    const std::string pose = options.translation_only
+                                 ? "0 0 0"
+                                 : numbers({p.x(), p.y(), p.z(), q.w(), q.x(), q.y(), q.z()});
+    const std::string velocity = options.translation_only
+                                     ? numbers({v.x(), v.y(), v.z()})
+                                     : numbers({v.x(), v.y(), v.z(), w.x(), w.y(), w.z()});
+    qpos.append(qpos.empty() ? "" : " ").append(pose);
+    qvel.append(qvel.empty() ? "" : " ").append(velocity);
   }
   return "  <keyframe><key name=\"start\" qpos=\"" + qpos + "\" qvel=\"" + qvel +
          "\"/></keyframe>\n";
@@ -93,7 +105,7 @@ std::string keyframe(const SceneDesc& scene) {
 
 }  // namespace
 
-MjcfScene fromScene(const SceneDesc& scene, Cone cone) {
+MjcfScene fromScene(const SceneDesc& scene, const MjcfOptions& options) {
   if (!scene.joints.empty() || !scene.springs.empty() || !scene.loads.empty())
     throw Error("MuJoCo's side takes no joints, springs or loads");
   const WorldSettings& w = scene.settings;
@@ -102,12 +114,12 @@ MjcfScene fromScene(const SceneDesc& scene, Cone cone) {
   std::string xml =
       "<mujoco model=\"asperity\">\n  <option timestep=\"" + numbers({w.dt}) + "\" gravity=\"" +
       numbers({w.gravity.x(), w.gravity.y(), w.gravity.z()}) + "\" cone=\"" +
-      (cone == Cone::Elliptic ? "elliptic" : "pyramidal") + "\"/>\n  <size nconmax=\"" +
+      (options.cone == Cone::Elliptic ? "elliptic" : "pyramidal") + "\"/>\n  <size nconmax=\"" +
       std::to_string(16 * bodies + 64) + "\" njmax=\"" + std::to_string(64 * bodies + 256) +
       "\"/>\n" + "  <default><geom condim=\"3\" friction=\"" +
       numbers({w.friction.mu0, 0.005, 0.0001}) + "\"/></default>\n" + "  <worldbody>\n";
-  for (const BodyDesc& b : scene.bodies) xml += bodyElement(b);
-  xml += "  </worldbody>\n" + keyframe(scene) + "</mujoco>\n";
+  for (const BodyDesc& b : scene.bodies) xml += bodyElement(b, options);
+  xml += "  </worldbody>\n" + keyframe(scene, options) + "</mujoco>\n";
   return {xml, engine_setups::surfacesFile(scene)};
 }
 
@@ -124,8 +136,9 @@ ModelPtr loadModel(const std::string& xml) {
   return model;
 }
 
-RunResult run(const SceneDesc& scene, double seconds, bool with_asperity, Cone cone) {
-  const MjcfScene mjcf = fromScene(scene, cone);
+RunResult run(const SceneDesc& scene, double seconds, bool with_asperity,
+              const MjcfOptions& options) {
+  const MjcfScene mjcf = fromScene(scene, options);
   ModelPtr model = loadModel(mjcf.xml);
   DataPtr data(mj_makeData(model.get()));
   mj_resetDataKeyframe(model.get(), data.get(), 0);
@@ -144,10 +157,11 @@ RunResult run(const SceneDesc& scene, double seconds, bool with_asperity, Cone c
     out.trajectory.insert(out.trajectory.end(), data->qpos, data->qpos + model->nq);
   }
   if (friction) out.stats = friction->lastStats();
-  // Each free body's position from its joint's qpos.
+  // Each body's frame at the end (kinematics of the last qpos).
+  mj_kinematics(model.get(), data.get());
   for (int b = 1; b < model->nbody; ++b) {
-    const mjtNum* q = data->qpos + model->jnt_qposadr[model->body_jntadr[b]];
-    out.positions[mj_id2name(model.get(), mjOBJ_BODY, b)] = Vec3(q[0], q[1], q[2]);
+    const mjtNum* p = data->xpos + 3 * b;
+    out.positions[mj_id2name(model.get(), mjOBJ_BODY, b)] = Vec3(p[0], p[1], p[2]);
   }
   return out;
 }

@@ -27,8 +27,16 @@ struct MjcfScene {
 // (docs/engines.md measures it).
 enum class Cone { Elliptic, Pyramidal };
 
+struct MjcfOptions {
+  Cone cone = Cone::Elliptic;
+  // Dynamic bodies on three slide joints instead of a free joint: they cannot turn, so their
+  // faces stay parallel to what they slide on (a check of the adapter alone: a tilted flat
+  // face ploughs a little in Asperity's model, SPEC 2).
+  bool translation_only = false;
+};
+
 // Throws asperity::Error naming what MuJoCo's side cannot hold.
-MjcfScene fromScene(const SceneDesc& scene, Cone cone = Cone::Elliptic);
+MjcfScene fromScene(const SceneDesc& scene, const MjcfOptions& options = {});
 
 // A model compiled from MJCF text (MuJoCo's virtual file system); throws asperity::Error with
 // MuJoCo's message.
@@ -45,11 +53,11 @@ ModelPtr loadModel(const std::string& xml);
 // The scene in MuJoCo from keyframe "start" for `seconds`, with Asperity's friction when
 // `with_asperity` (else MuJoCo's own).
 struct RunResult {
-  std::map<std::string, Vec3> positions;  // each free body's at the end, by name
+  std::map<std::string, Vec3> positions;  // each dynamic body's at the end, by name
   std::vector<double> trajectory;         // qpos after every step, one after the other
   MujocoFrictionStats stats;              // of the last step (zero without Asperity)
 };
 RunResult run(const SceneDesc& scene, double seconds, bool with_asperity,
-              Cone cone = Cone::Elliptic);
+              const MjcfOptions& options = {});
 
 }  // namespace asperity::mjcf_scene

@@ -64,11 +64,14 @@ void setPose(dGeomID geom, const Transform& pose) {
 
 }  // namespace
 
-OdeScene::OdeScene(const SceneDesc& scene)
+OdeScene::OdeScene(const SceneDesc& scene, const OdeOptions& options)
     : dt_(scene.settings.dt), mu0_(scene.settings.friction.mu0) {
   if (!scene.joints.empty() || !scene.springs.empty() || !scene.loads.empty())
     throw Error("ODE's side takes no joints, springs or loads");
   initOde();
+  // QuickStep shuffles its rows with ODE's one random generator: seed it, so that every run of
+  // a scene is the same.
+  dRandSetSeed(0);
   // World and contacts as the peers' benchmark tunes them.
   world_ = dWorldCreate();
   const Vec3& g = scene.settings.gravity;
@@ -78,7 +81,7 @@ OdeScene::OdeScene(const SceneDesc& scene)
   dWorldSetCFM(world_, 1e-5);
   space_ = dHashSpaceCreate(nullptr);
   contacts_ = dJointGroupCreate(0);
-  for (const BodyDesc& b : scene.bodies) addBody(b);
+  for (const BodyDesc& b : scene.bodies) addBody(b, options);
 }
 
 OdeScene::~OdeScene() {
@@ -87,7 +90,7 @@ OdeScene::~OdeScene() {
   dWorldDestroy(world_);
 }
 
-void OdeScene::addBody(const BodyDesc& b) {
+void OdeScene::addBody(const BodyDesc& b, const OdeOptions& options) {
   if (b.shapes.size() != 1)
     throw Error("body \"" + b.name + "\": ODE's side takes one shape per body");
   const Shape& s = b.shapes[0];
@@ -116,6 +119,7 @@ void OdeScene::addBody(const BodyDesc& b) {
     dBodySetLinearVel(body, v.x(), v.y(), v.z());
     dBodySetAngularVel(body, b.angular_velocity.x(), b.angular_velocity.y(),
                        b.angular_velocity.z());
+    if (options.translation_only) dBodySetMaxAngularSpeed(body, 0);
     bodies_.emplace_back(b.name, body);
   }
   names_.push_back(b.name);
@@ -176,8 +180,9 @@ std::vector<double> OdeScene::state() const {
   return out;
 }
 
-RunResult run(const SceneDesc& scene, double seconds, bool with_asperity) {
-  OdeScene ode(scene);
+RunResult run(const SceneDesc& scene, double seconds, bool with_asperity,
+              const OdeOptions& options) {
+  OdeScene ode(scene, options);
   std::unique_ptr<OdeFriction> friction;
   if (with_asperity) {
     friction = std::make_unique<OdeFriction>(

@@ -18,11 +18,18 @@
 
 namespace asperity::ode_scene {
 
+// Dynamic bodies whose angular speed is held at 0 (dBodySetMaxAngularSpeed): they cannot turn,
+// so their faces stay parallel to what they slide on (a check of the adapter alone: a tilted
+// flat face ploughs a little in Asperity's model, SPEC 2).
+struct OdeOptions {
+  bool translation_only = false;
+};
+
 class OdeScene {
  public:
   // Initialises ODE for this thread on first use. Throws asperity::Error naming what ODE's side
   // cannot hold.
-  explicit OdeScene(const SceneDesc& scene);
+  explicit OdeScene(const SceneDesc& scene, const OdeOptions& options = {});
   ~OdeScene();
   OdeScene(const OdeScene&) = delete;
   OdeScene& operator=(const OdeScene&) = delete;
@@ -39,7 +46,7 @@ class OdeScene {
 
  private:
   static void nearCallback(void* data, dGeomID o1, dGeomID o2);
-  void addBody(const BodyDesc& desc);
+  void addBody(const BodyDesc& desc, const OdeOptions& options);
 
   dWorldID world_ = nullptr;
   dSpaceID space_ = nullptr;
@@ -59,6 +66,7 @@ struct RunResult {
   std::vector<double> trajectory;         // OdeScene::state() after every step
   OdeFrictionStats stats;                 // of the last step (zero without Asperity)
 };
-RunResult run(const SceneDesc& scene, double seconds, bool with_asperity);
+RunResult run(const SceneDesc& scene, double seconds, bool with_asperity,
+              const OdeOptions& options = {});
 
 }  // namespace asperity::ode_scene
