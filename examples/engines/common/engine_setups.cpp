@@ -98,14 +98,14 @@ SceneDesc sawtoothIncline(double degrees, double speed) {
 
 SceneDesc sawtoothBoxes(int count) {
   SceneDesc scene = sawtoothLaunch();
-  const Surface sawtooth = bodyNamed(scene, "plane_ramp").shapes[0].surface;
-  scene.bodies.clear();
-  const int rows = (count + 5) / 6;
-  scene.bodies.push_back(slab("slab", Vec3::Zero(), Vec3(2.0, 0.4 * rows + 0.2, 0.05), sawtooth));
-  // Six boxes a row, 0.4 m apart, each launched at 1 m/s up the ramps.
+  BodyDesc ground = groundPlaneDesc();
+  ground.name = "ground";
+  ground.shapes[0].surface = bodyNamed(scene, "plane_ramp").shapes[0].surface;
+  scene.bodies = {ground};
+  // Six boxes a row, 0.4 m apart, each launched at 1 m/s along the ridges.
   for (int i = 0; i < count; ++i) {
-    const Vec3 at(-1.5 + 0.4 * (i % 6), -0.4 * rows + 0.4 + 0.8 * (i / 6), 0.1);
-    scene.bodies.push_back(launchedBox("box_" + std::to_string(i), at, Vec3(1.0, 0.0, 0.0)));
+    const Vec3 at(-1.0 + 0.4 * (i % 6), -1.0 + 0.4 * (i / 6), 0.1);
+    scene.bodies.push_back(launchedBox("box_" + std::to_string(i), at, Vec3(0.0, 1.0, 0.0)));
   }
   return scene;
 }

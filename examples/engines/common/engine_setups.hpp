@@ -35,8 +35,9 @@ SceneDesc gaussianLaunch(double speed = 1.0);
 // in lets it creep back down.
 SceneDesc sawtoothIncline(double degrees = 35.0, double speed = 1.0);
 
-// The same sawtooth slab as sawtoothLaunch with `count` boxes in rows, each launched at 1 m/s
-// along +x (the benchmark's scene).
+// The benchmark's scene: a ground plane with sawtoothLaunch's texture under `count` 0.2 m boxes
+// in rows of six, 0.4 m apart, all launched at 1 m/s along the ridges (+y), so that every
+// contact slides (and is sampled afresh) for about half a second.
 SceneDesc sawtoothBoxes(int count);
 
 // The surfaces file (asperity/engines/engine_surfaces.hpp) of a scene rebuilt in an engine
