@@ -175,9 +175,24 @@ std::vector<double> OdeScene::state() const {
   for (const auto& entry : bodies_) {
     const dReal* p = dBodyGetPosition(entry.second);
     const dReal* q = dBodyGetQuaternion(entry.second);
+    const dReal* v = dBodyGetLinearVel(entry.second);
+    const dReal* w = dBodyGetAngularVel(entry.second);
     out.insert(out.end(), {p[0], p[1], p[2], q[0], q[1], q[2], q[3]});
+    out.insert(out.end(), {v[0], v[1], v[2], w[0], w[1], w[2]});
   }
   return out;
+}
+
+void OdeScene::restore(const std::vector<double>& state) {
+  const double* s = state.data();
+  for (const auto& entry : bodies_) {
+    const dQuaternion q = {s[3], s[4], s[5], s[6]};
+    dBodySetPosition(entry.second, s[0], s[1], s[2]);
+    dBodySetQuaternion(entry.second, q);
+    dBodySetLinearVel(entry.second, s[7], s[8], s[9]);
+    dBodySetAngularVel(entry.second, s[10], s[11], s[12]);
+    s += 13;
+  }
 }
 
 RunResult run(const SceneDesc& scene, double seconds, bool with_asperity,

@@ -41,8 +41,10 @@ class OdeScene {
   double dt() const { return dt_; }
   // Each dynamic body's position by name.
   std::map<std::string, Vec3> positions() const;
-  // Every dynamic body's position and quaternion, one after the other.
+  // Every dynamic body's position, quaternion, linear and angular velocity, one after the other.
   std::vector<double> state() const;
+  // Puts the bodies back where state() saw them.
+  void restore(const std::vector<double>& state);
 
  private:
   static void nearCallback(void* data, dGeomID o1, dGeomID o2);
