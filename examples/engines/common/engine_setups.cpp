@@ -1,6 +1,7 @@
 // The engine demos' shared set-ups and measurements (engine_setups.hpp).
 #include "engine_setups.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -173,18 +174,21 @@ DemoOptions parseDemoOptions(const std::vector<std::string>& args) {
       if (arg == "--seconds") o.seconds = std::stod(value);
     } else {
       throw Error("unknown argument \"" + arg +
-                  "\" (expected --json, --compare, --scene sawtooth|materials|incline, "
+                  "\" (expected --json, --compare, --scene sawtooth|materials|gaussian|incline, "
                   "--seconds S)");
     }
   }
-  if (o.scene != "sawtooth" && o.scene != "materials" && o.scene != "incline")
-    throw Error("--scene must be sawtooth, materials or incline, got \"" + o.scene + "\"");
+  const std::vector<std::string> scenes{"sawtooth", "materials", "gaussian", "incline"};
+  if (std::find(scenes.begin(), scenes.end(), o.scene) == scenes.end())
+    throw Error("--scene must be sawtooth, materials, gaussian or incline, got \"" + o.scene +
+                "\"");
   if (!(o.seconds > 0.0)) throw Error("--seconds must be positive");
   return o;
 }
 
 SceneDesc demoScene(const DemoOptions& options) {
   if (options.scene == "incline") return sawtoothIncline();
+  if (options.scene == "gaussian") return gaussianLaunch();
   return options.scene == "materials" ? boxesOnMaterials() : sawtoothLaunch();
 }
 

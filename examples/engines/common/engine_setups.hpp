@@ -55,7 +55,8 @@ Distances asperityDistances(const SceneDesc& scene, double seconds);
 // {"ramps": m, ...}: each body's distance under its name without the "box_" prefix.
 std::string distancesJson(const Distances& distances);
 
-// The demos' command line: --json, --compare, --scene sawtooth|materials|incline, --seconds.
+// The demos' command line: --json, --compare, --scene sawtooth|materials|gaussian|incline,
+// --seconds.
 struct DemoOptions {
   bool json = false;
   bool compare = false;  // also the engine alone and Asperity's own World

@@ -1,10 +1,11 @@
 // asperity-mujoco-demo: the paper's sawtooth plane (Sec. 5.2) in MuJoCo with Asperity's
 // friction: 0.2 m boxes launched at 1 m/s up the ramps, against the steep faces and along the
-// ridges, and how far each slides in 2 s (--scene materials: boxes on four materials).
+// ridges, and how far each slides in 2 s. Other scenes: materials (boxes on four materials),
+// gaussian (anisotropic slopes), incline (a sawtooth slope where a symmetric cone is wrong).
 // --compare adds MuJoCo alone (mu0 only) and Asperity's own World on the same scene;
 // --pyramidal uses MuJoCo's pyramidal cone instead of the elliptic one.
-//   asperity-mujoco-demo [--json] [--compare] [--pyramidal] [--scene sawtooth|materials]
-//                        [--seconds 2]
+//   asperity-mujoco-demo [--json] [--compare] [--pyramidal]
+//                        [--scene sawtooth|materials|gaussian|incline] [--seconds 2]
 #include <algorithm>
 #include <string>
 #include <vector>

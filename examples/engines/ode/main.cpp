@@ -1,8 +1,10 @@
 // asperity-ode-demo: the paper's sawtooth plane (Sec. 5.2) in ODE with Asperity's friction:
 // 0.2 m boxes launched at 1 m/s up the ramps, against the steep faces and along the ridges, and
-// how far each slides in 2 s (--scene materials: boxes on four materials). --compare adds ODE
-// alone (mu0 only) and Asperity's own World on the same scene.
-//   asperity-ode-demo [--json] [--compare] [--scene sawtooth|materials] [--seconds 2]
+// how far each slides in 2 s. Other scenes: materials (boxes on four materials), gaussian
+// (anisotropic slopes), incline (a sawtooth slope where a symmetric cone is wrong). --compare
+// adds ODE alone (mu0 only) and Asperity's own World on the same scene.
+//   asperity-ode-demo [--json] [--compare] [--scene sawtooth|materials|gaussian|incline]
+//                     [--seconds 2]
 #include <string>
 #include <vector>
 
