@@ -201,7 +201,7 @@ void printTable(const std::vector<std::pair<std::string, Distances>>& runs) {
   std::printf("\n");
   for (const auto& entry : runs[0].second) {
     std::printf("%-16s", entry.first.c_str());
-    for (const auto& run : runs) std::printf(" %20.3f m", run.second.at(entry.first));
+    for (const auto& run : runs) std::printf(" %20.4f m", run.second.at(entry.first));
     std::printf("\n");
   }
 }
