@@ -2,6 +2,7 @@
 #include "ode_scene.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <memory>
 
 #include "asperity/error.hpp"
@@ -17,6 +18,7 @@ constexpr int kMaxContactsPerPair = 8;
 void initOde() {
   static const bool done = [] {
     dInitODE2(0);
+    std::atexit(dCloseODE);
     return dAllocateODEDataForThread(dAllocateMaskAll) != 0;
   }();
   if (!done) throw Error("ODE could not allocate its data for this thread");
