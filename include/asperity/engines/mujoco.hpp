@@ -16,7 +16,9 @@
 // in, else the sense it last slid in (ContactFrictionResult::symmetric_t, _b): exact while a
 // contact slides one way, approximate when it reverses or rests under a load that pushes the
 // other way (docs/engines.md measures it). Where both coefficients are equal the frame is
-// MuJoCo's own, so a flat texture leaves MuJoCo's run bit for bit unchanged.
+// MuJoCo's own, so a flat texture leaves MuJoCo's run bit for bit unchanged. Use the elliptic
+// cone: a pyramid shares the normal force among its edges, so with strongly anisotropic
+// coefficients its weak axis grips too little.
 #pragma once
 
 #include <mujoco/mujoco.h>
