@@ -46,3 +46,25 @@ if(ASPERITY_WITH_PYTHON)
   find_package(Python 3.9 REQUIRED COMPONENTS Interpreter Development.Module NumPy)
   find_package(pybind11 2.6 CONFIG REQUIRED)
 endif()
+
+# Engine adapters (docs/engines.md), each built when its Debian package is found: MuJoCo 2.2
+# (libmujoco-dev) and ODE (libode-dev).
+if(ASPERITY_WITH_MUJOCO)
+  find_package(mujoco CONFIG QUIET)
+  if(TARGET mujoco::mujoco)
+    # Debian's 2.2.2 package names /usr/include/libqhull_r/, which it does not install; CMake
+    # refuses imported targets with missing include folders, so keep only those that exist.
+    get_target_property(mujoco_includes mujoco::mujoco INTERFACE_INCLUDE_DIRECTORIES)
+    set(mujoco_existing)
+    foreach(folder ${mujoco_includes})
+      if(EXISTS "${folder}")
+        list(APPEND mujoco_existing "${folder}")
+      endif()
+    endforeach()
+    set_target_properties(mujoco::mujoco PROPERTIES INTERFACE_INCLUDE_DIRECTORIES
+                                                    "${mujoco_existing}")
+  endif()
+endif()
+if(ASPERITY_WITH_ODE)
+  pkg_check_modules(ODE QUIET IMPORTED_TARGET ode)
+endif()

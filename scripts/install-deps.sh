@@ -17,6 +17,8 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed python3-matplotlib
   # command-line tool plots (SVG and PNG) and their font
   libcairo2-dev fonts-dejavu-core
+  # the engine adapters (docs/engines.md): Asperity's friction inside MuJoCo 2.2 and ODE 0.16
+  libmujoco-dev libode-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # the assimp command, which writes the FBX and COLLADA files the asset tests read back

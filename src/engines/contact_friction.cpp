@@ -80,7 +80,9 @@ struct ContactFriction::Impl {
   std::map<std::string, ObjectId, std::less<>> names;
   std::vector<Contact> contacts;
   std::vector<ContactFrictionResult> results;
-  std::map<SenseKey, Senses> senses;  // of the last compute
+  // Senses of the last compute, sorted by key; `next` is this compute's (kept for its room).
+  std::vector<std::pair<SenseKey, Senses>> senses, next;
+  std::vector<std::pair<SenseKey, size_t>> ranks;  // assignRankKeys' room
   double last_ms = 0.0;
   Diagnostics diagnostics;
 
@@ -91,20 +93,22 @@ struct ContactFriction::Impl {
 };
 
 Contact ContactFriction::Impl::toContact(const EngineContact& e, size_t index) const {
-  const std::string what = "contact " + std::to_string(index) + ": ";
+  // The messages' prefix, built only for an error.
+  const auto what = [index] { return "contact " + std::to_string(index) + ": "; };
   auto checkSide = [&](ObjectId id, int shape, const char* side) {
     if (id >= bodies.size())
-      throw Error(what + "object " + side + " (" + std::to_string(id) + ") is not registered");
+      throw Error(what() + "object " + side + " (" + std::to_string(id) + ") is not registered");
     if (shape < 0 || static_cast<size_t>(shape) >= bodies[id].shapes.size())
-      throw Error(what + "object '" + bodies[id].name + "' has no shape " + std::to_string(shape));
+      throw Error(what() + "object '" + bodies[id].name + "' has no shape " +
+                  std::to_string(shape));
   };
   checkSide(e.object_a, e.shape_a, "A");
   checkSide(e.object_b, e.shape_b, "B");
-  if (!finite(e.point)) throw Error(what + "point is not finite");
+  if (!finite(e.point)) throw Error(what() + "point is not finite");
   if (!finite(e.normal) || std::abs(e.normal.norm() - 1.0) > 1e-6)
-    throw Error(what + "normal must be a unit vector");
+    throw Error(what() + "normal must be a unit vector");
   if (!(e.depth >= 0.0) || !std::isfinite(e.depth))
-    throw Error(what + "depth must be a finite number >= 0");
+    throw Error(what() + "depth must be a finite number >= 0");
   Contact c;
   c.body_a = e.object_a;
   c.body_b = e.object_b;
@@ -123,11 +127,17 @@ Contact ContactFriction::Impl::toContact(const EngineContact& e, size_t index) c
 }
 
 void ContactFriction::Impl::assignRankKeys(std::span<const EngineContact> in) {
-  std::map<std::tuple<ObjectId, ObjectId, int, int>, uint64_t> rank;
-  for (size_t i = 0; i < in.size(); ++i) {
-    if (in[i].key != 0) continue;
-    const auto pair = std::make_tuple(in[i].object_a, in[i].object_b, in[i].shape_a, in[i].shape_b);
-    contacts[i].key = kRankKey | rank[pair]++;
+  // Key-less contacts grouped by pair, in batch order within a pair (no allocation once warm).
+  ranks.clear();
+  for (size_t i = 0; i < in.size(); ++i)
+    if (in[i].key == 0)
+      ranks.push_back({{in[i].object_a, in[i].object_b, in[i].shape_a, in[i].shape_b, 0}, i});
+  std::sort(ranks.begin(), ranks.end());
+  // Each contact's rank within its pair.
+  uint64_t rank = 0;
+  for (size_t k = 0; k < ranks.size(); ++k) {
+    rank = k > 0 && ranks[k].first == ranks[k - 1].first ? rank + 1 : 0;
+    contacts[ranks[k].second].key = kRankKey | rank;
   }
 }
 
@@ -150,7 +160,7 @@ void ContactFriction::Impl::setFrames() {
 }
 
 void ContactFriction::Impl::fillResults(std::span<const EngineContact> in) {
-  std::map<SenseKey, Senses> next;
+  next.clear();
   results.resize(contacts.size());
   for (size_t i = 0; i < contacts.size(); ++i) {
     const Contact& c = contacts[i];
@@ -166,8 +176,10 @@ void ContactFriction::Impl::fillResults(std::span<const EngineContact> in) {
         bodies[c.body_a].pointVelocity(c.point) - bodies[c.body_b].pointVelocity(c.point);
     r.sliding = v - v.dot(c.normal) * c.normal;
     const SenseKey key{in[i].object_a, in[i].object_b, c.shape_a, c.shape_b, c.key};
-    const auto last = senses.find(key);
-    const Senses before = last == senses.end() ? Senses{} : last->second;
+    const auto last =
+        std::lower_bound(senses.begin(), senses.end(), key,
+                         [](const auto& e, const SenseKey& k) { return e.first < k; });
+    const Senses before = last != senses.end() && last->first == key ? last->second : Senses{};
     const double vt = r.sliding.dot(c.t), vb = r.sliding.dot(c.b);
     const double speed = settings.sliding_speed;
     r.symmetric_t = symmetricCoefficient(r.bounds.mu_pos_t, r.bounds.mu_neg_t, vt, before.t, speed);
@@ -176,9 +188,12 @@ void ContactFriction::Impl::fillResults(std::span<const EngineContact> in) {
     Senses now = before;
     if (std::abs(vt) > speed) now.t = vt > 0.0 ? 1 : -1;
     if (std::abs(vb) > speed) now.b = vb > 0.0 ? 1 : -1;
-    next[key] = now;
+    next.push_back({key, now});
   }
-  senses = std::move(next);
+  // Sorted for the next compute's lookups.
+  std::sort(next.begin(), next.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  senses.swap(next);
 }
 
 ContactFriction::ContactFriction(ContactFrictionSettings settings)

@@ -75,6 +75,8 @@ GeneratorSpec parseGenerator(JsonReader r, const std::string& base_dir) {
   return spec;
 }
 
+}  // namespace
+
 // "surface": the normal map (file or generator), its mapping, gain k and mask (SPEC 3, 6), and
 // the base colour it is drawn with.
 Surface parseSurface(JsonReader r, const std::string& base_dir) {
@@ -100,6 +102,8 @@ Surface parseSurface(JsonReader r, const std::string& base_dir) {
   r.finish();
   return s;
 }
+
+namespace {
 
 // A shape's "surface": an object, or the name of an entry of "materials" (a copy of that entry).
 // `names_color` tells whether it gives a base colour.
@@ -260,11 +264,6 @@ void parseBodies(JsonReader& root, SceneDesc& scene) {
     if (!names.insert(scene.bodies.back().name).second)
       bodies[i].failAt("name", "duplicate body name \"" + scene.bodies.back().name + "\"");
   }
-}
-
-// The reader of a shape's "surface", for files that are not scenes (scene_common.hpp).
-Surface parseSurfaceObject(JsonReader r, const std::string& base_dir) {
-  return parseSurface(std::move(r), base_dir);
 }
 
 }  // namespace asperity::scene

@@ -27,12 +27,13 @@ double radiansFromDegrees(double degrees);
 
 // Parses the "materials" table (named surfaces), before the bodies that refer to it.
 void parseMaterials(JsonReader& root, SceneDesc& scene);
+// A "surface" object (normal map file or generator, gain, texture size and rotation, mask, base
+// colour); files resolve against base_dir and must exist. Also read by the engines' surfaces
+// files (asperity/engines/engine_surfaces.hpp).
+Surface parseSurface(JsonReader r, const std::string& base_dir);
 // Parses the "bodies" array (shapes, surfaces, OBJ meshes), checking names are unique.
 void parseBodies(JsonReader& root, SceneDesc& scene);
 // Writes one body back (with its meshes from scene.meshes).
 nlohmann::json bodyToJson(const SceneDesc& scene, size_t index);
-// A surface object as a shape's "surface" holds it, read outside a scene (the surfaces files
-// of other engines' adapters, engines/surfaces_file.cpp).
-Surface parseSurfaceObject(JsonReader r, const std::string& base_dir);
 
 }  // namespace asperity::scene

@@ -152,50 +152,43 @@ TEST(ContactFriction, SymmetricConesTakeTheSenseTheContactSlidesIn) {
   EXPECT_EQ(resting.symmetric_t, resting.bounds.mu_neg_t);
 }
 
-// The message of what `work` throws.
-template <class Work>
-std::string errorOf(const Work& work) {
-  try {
-    work();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 TEST(ContactFriction, BadInputIsAnErrorNamingIt) {
   ContactFriction friction;
   ObjectDesc ground;
   ground.name = "ground";
   ground.shapes = groundPlaneDesc().shapes;
   friction.addObject(ground);
-  EXPECT_NE(errorOf([&] { friction.addObject(ground); }).find("'ground' is registered already"),
-            std::string::npos);
+  EXPECT_NE(
+      test::errorOf([&] { friction.addObject(ground); }).find("'ground' is registered already"),
+      std::string::npos);
   ObjectDesc unresolved = ground;
   unresolved.name = "rough";
   unresolved.shapes[0].surface.source.normal_map_file = "rough.png";
-  EXPECT_NE(errorOf([&] { friction.addObject(unresolved); }).find("is not resolved"),
+  EXPECT_NE(test::errorOf([&] { friction.addObject(unresolved); }).find("is not resolved"),
             std::string::npos);
   EngineContact c;
   c.object_a = 5;
   c.object_b = 0;
-  EXPECT_NE(errorOf([&] {
+  EXPECT_NE(test::errorOf([&] {
               friction.compute({&c, 1});
             }).find("contact 0: object A (5)"),
             std::string::npos);
   c.object_a = 0;
   c.normal = Vec3(0, 0, 2);
-  EXPECT_NE(errorOf([&] { friction.compute({&c, 1}); }).find("unit vector"), std::string::npos);
+  EXPECT_NE(test::errorOf([&] {
+              friction.compute({&c, 1});
+            }).find("unit vector"),
+            std::string::npos);
   c.normal = Vec3::UnitZ();
   c.depth = -1.0;
-  EXPECT_NE(errorOf([&] { friction.compute({&c, 1}); }).find("depth"), std::string::npos);
+  EXPECT_NE(test::errorOf([&] { friction.compute({&c, 1}); }).find("depth"), std::string::npos);
   ContactFrictionSettings bad;
   bad.provider = "magic";
-  EXPECT_NE(errorOf([&] { ContactFriction f(bad); }).find("magic"), std::string::npos);
+  EXPECT_NE(test::errorOf([&] { ContactFriction f(bad); }).find("magic"), std::string::npos);
   bad = {};
   bad.friction.directions = 3;
-  EXPECT_NE(errorOf([&] { ContactFriction f(bad); }).find("directions"), std::string::npos);
-  EXPECT_NE(errorOf([&] { friction.setState(9, {}); }).find("object 9"), std::string::npos);
+  EXPECT_NE(test::errorOf([&] { ContactFriction f(bad); }).find("directions"), std::string::npos);
+  EXPECT_NE(test::errorOf([&] { friction.setState(9, {}); }).find("object 9"), std::string::npos);
 }
 
 }  // namespace

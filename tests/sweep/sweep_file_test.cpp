@@ -76,17 +76,6 @@ TEST(SweepFile, AFileCutAnywhereResumesToTheBytesOfOneRun) {
   EXPECT_EQ(slurp(killed), expected);
 }
 
-// The message of the SweepFileError `work` throws.
-template <class Work>
-std::string fileError(const Work& work) {
-  try {
-    work();
-  } catch (const SweepFileError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
 TEST(SweepFile, ResumesThatWouldMixTwoSweepsAreRefused) {
   const Sweep sweep(boxes());
   const std::string dir = test::tempDir("sweep_refused");
@@ -96,27 +85,27 @@ TEST(SweepFile, ResumesThatWouldMixTwoSweepsAreRefused) {
   // Another seed's journal: named, with the field that differs.
   write(path, half);
   write(sweepJournalPath(path), sweepJournal(Sweep(boxes(4))));
-  const std::string seed = fileError([&] { runSweepToFile(sweep, {path, 1, true}); });
+  const std::string seed = test::errorOf([&] { runSweepToFile(sweep, {path, 1, true}); });
   EXPECT_NE(seed.find(sweepJournalPath(path)), std::string::npos) << seed;
   EXPECT_NE(seed.find("seed"), std::string::npos) << seed;
   // No journal and an unfinished file; no file at all; another table's header.
   std::filesystem::remove(sweepJournalPath(path));
-  EXPECT_NE(fileError([&] {
+  EXPECT_NE(test::errorOf([&] {
               runSweepToFile(sweep, {path, 1, true});
             }).find("journal"),
             std::string::npos);
-  EXPECT_NE(fileError([&] {
+  EXPECT_NE(test::errorOf([&] {
               runSweepToFile(sweep, {dir + "/none.csv", 1, true});
             }).find("does not exist"),
             std::string::npos);
   write(path, "sample,x\n0,1\n");
   write(sweepJournalPath(path), sweepJournal(sweep));
-  EXPECT_NE(fileError([&] {
+  EXPECT_NE(test::errorOf([&] {
               runSweepToFile(sweep, {path, 1, true});
             }).find("header"),
             std::string::npos);
   // A folder that does not exist.
-  EXPECT_NE(fileError([&] {
+  EXPECT_NE(test::errorOf([&] {
               runSweepToFile(sweep, {dir + "/no/s.csv", 1, false});
             }).find("cannot open"),
             std::string::npos);
@@ -124,7 +113,9 @@ TEST(SweepFile, ResumesThatWouldMixTwoSweepsAreRefused) {
 
 TEST(SweepFile, AFullDiskIsAnErrorNamingTheFile) {
   const Sweep sweep(boxes());
-  const std::string message = fileError([&] { runSweepToFile(sweep, {"/dev/full", 1, false}); });
+  const std::string message = test::errorOf([&] {
+    runSweepToFile(sweep, {"/dev/full", 1, false});
+  });
   EXPECT_NE(message.find("/dev/full: write failed"), std::string::npos) << message;
   EXPECT_FALSE(std::filesystem::exists("/dev/full.sweep"));
 }

@@ -35,7 +35,7 @@
 #include <vector>
 
 #include "asperity/engines/contact_friction.hpp"
-#include "asperity/engines/surfaces_file.hpp"
+#include "asperity/engines/engine_surfaces.hpp"
 
 class btCollisionObject;
 class btCollisionShape;
@@ -65,7 +65,7 @@ class BulletFriction {
   ObjectId attach(btCollisionObject* object, const std::string& name, const Surface& surface);
   // Attaches each entry of a surfaces file to the object of that name. A name that `objects`
   // lacks is an error naming the name and the file (nothing is attached then).
-  void attach(const SurfacesFile& file, const std::map<std::string, btCollisionObject*>& objects);
+  void attach(const EngineSurfaces& file, const std::map<std::string, btCollisionObject*>& objects);
   // Stops handling `object`'s contacts (call it before removing the object from the world);
   // its contacts get Bullet's own friction again. Unknown objects are ignored.
   void detach(btCollisionObject* object);

@@ -231,14 +231,17 @@ ObjectId BulletFriction::attach(btCollisionObject* object, const std::string& na
   return impl_->add(object, desc);
 }
 
-void BulletFriction::attach(const SurfacesFile& file,
+void BulletFriction::attach(const EngineSurfaces& file,
                             const std::map<std::string, btCollisionObject*>& objects) {
-  // Every name first, so that a bad file attaches nothing.
-  std::vector<std::string> known;
-  for (const auto& entry : objects) known.push_back(entry.first);
-  for (const auto& entry : file.surfaces)
-    if (!objects.count(entry.first)) throw unknownObjectError(file, entry.first, known);
-  for (const auto& [name, surface] : file.surfaces) attach(objects.at(name), name, surface);
+  // Every name first, so that a bad file attaches nothing; the error lists the known ones.
+  std::string known;
+  for (const auto& entry : objects) known += (known.empty() ? "\"" : ", \"") + entry.first + "\"";
+  for (const EngineSurface& e : file.surfaces)
+    if (!objects.count(e.name))
+      file.failAt(e.name, "unknown object \"" + e.name + "\" (" +
+                              (known.empty() ? std::string("the engine named no objects") : known) +
+                              ")");
+  for (const EngineSurface& e : file.surfaces) attach(objects.at(e.name), e.name, e.surface);
 }
 
 void BulletFriction::detach(btCollisionObject* object) {

@@ -176,7 +176,7 @@ TEST(BulletFriction, ASurfacesFileAttachesObjectsByName) {
   // Up the ramps in a hand-built world: as far as Asperity slides the same box (within 10 %).
   HandBuilt bullet(1.0f);
   BulletFriction friction(bullet.world);
-  friction.attach(loadSurfacesFile(surfacesFile(kSawtoothFile)), bullet.objects());
+  friction.attach(loadEngineSurfaces(surfacesFile(kSawtoothFile)), bullet.objects());
   for (int i = 0; i < 200; ++i) bullet.world.stepSimulation(0.01f, 0);
   const double slid = bullet.box->getWorldTransform().getOrigin().x() + 1.0;
   const SceneDesc scene = loadScene(test::sourcePath("examples/engines/sawtooth_launch.json"));
@@ -193,13 +193,13 @@ TEST(BulletFriction, BadInputIsAnErrorNamingIt) {
   // An object name the world lacks names the name and the file; nothing is attached then.
   const std::string path = surfacesFile(R"({"surfaces": {"box": {}, "gripper": {}}})");
   std::string error =
-      test::errorOf([&] { friction.attach(loadSurfacesFile(path), bullet.objects()); });
+      test::errorOf([&] { friction.attach(loadEngineSurfaces(path), bullet.objects()); });
   EXPECT_NE(error.find(path), std::string::npos) << error;
   EXPECT_NE(error.find("unknown object \"gripper\""), std::string::npos) << error;
   EXPECT_EQ(friction.contactFriction().objectCount(), 0u);
   // A missing texture names its path.
   const std::string missing = surfacesFile(R"({"surfaces": {"box": {"normal_map": "oak.png"}}})");
-  error = test::errorOf([&] { friction.attach(loadSurfacesFile(missing), bullet.objects()); });
+  error = test::errorOf([&] { friction.attach(loadEngineSurfaces(missing), bullet.objects()); });
   EXPECT_NE(error.find("oak.png"), std::string::npos) << error;
   // A shape with no Asperity counterpart, a null object, an object attached twice.
   btConeShapeZ cone(0.1f, 0.2f);
@@ -219,7 +219,7 @@ TEST(BulletFriction, BadInputIsAnErrorNamingIt) {
 TEST(BulletFriction, DetachedObjectsGetBulletsFrictionBack) {
   HandBuilt bullet(1.0f);
   BulletFriction friction(bullet.world);
-  friction.attach(loadSurfacesFile(surfacesFile(kSawtoothFile)), bullet.objects());
+  friction.attach(loadEngineSurfaces(surfacesFile(kSawtoothFile)), bullet.objects());
   bullet.world.stepSimulation(0.01f, 0);
   bullet.world.stepSimulation(0.01f, 0);
   ASSERT_FALSE(friction.lastContacts().empty());
