@@ -126,9 +126,13 @@ nlohmann::json surfacesFile(const SceneDesc& scene) {
       {"world_axis", {w.world_axis.x(), w.world_axis.y(), w.world_axis.z()}}};
   const nlohmann::json written = sceneToJson(scene);
   nlohmann::json surfaces = nlohmann::json::object();
-  for (size_t i = 0; i < scene.bodies.size(); ++i)
-    if (scene.bodies[i].shapes[0].surface.source.namesNormalMap())
-      surfaces[scene.bodies[i].name] = written["bodies"][i]["shapes"][0]["surface"];
+  for (size_t i = 0; i < scene.bodies.size(); ++i) {
+    if (!scene.bodies[i].shapes[0].surface.source.namesNormalMap()) continue;
+    // A shape that names one of the scene's materials gets that material's surface object.
+    const nlohmann::json& surface = written["bodies"][i]["shapes"][0]["surface"];
+    surfaces[scene.bodies[i].name] =
+        surface.is_string() ? written["materials"][surface.get<std::string>()] : surface;
+  }
   return {{"settings", settings}, {"surfaces", surfaces}};
 }
 
