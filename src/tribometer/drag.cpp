@@ -1,0 +1,87 @@
+// The drag test (tribometer.hpp): the block, its rotation locked, pulled along s at constant
+// speed by a stiff, critically damped spring; mu_k = mean spring force along s / mean normal
+// force of the plate in the measured window (the weight less what the spring carries: the block
+// settles a little below the spring's line, which lifts it by about 1 %), mu_model = the
+// load-weighted mean coefficient of the block's contacts.
+#include <algorithm>
+#include <cmath>
+
+#include "asperity/tribometer/tribometer.hpp"
+#include "tribometer/rig.hpp"
+
+namespace asperity {
+
+namespace {
+
+// The drive: a spring from the block's centre to a target moving along s from that centre.
+SpringDesc dragSpring(const tribo::Rig& rig, const TribometerSettings& settings) {
+  const double omega = 2.0 * kPi * settings.spring_frequency;
+  SpringDesc spring;
+  spring.name = "drive";
+  spring.body = rig.block;
+  spring.target = rig.world->body(rig.block).descriptionPose().position;
+  spring.target_velocity = settings.drag_speed * rig.slide;
+  spring.stiffness = rig.mass * omega * omega;
+  spring.damping = 2.0 * rig.mass * omega;  // critical
+  return spring;
+}
+
+// The spring's force on the block now, as the drivers stage will apply it in the next step.
+Vec3 springForce(const World& world, const SpringDesc& spring) {
+  const Body& body = world.body(spring.body);
+  const Vec3 p = body.descriptionPose().apply(spring.local_point);
+  return spring.stiffness * (springTarget(spring, world.time()) - p) -
+         spring.damping * (body.pointVelocity(p) - spring.target_velocity);
+}
+
+// What a window measures, summed over steps (and tracks).
+struct DragSums {
+  double force_dt = 0.0;     // spring force along s times dt (N s)
+  double impulse = 0.0;      // normal impulse of the block's contacts (N s)
+  double weighted_mu = 0.0;  // their coefficients times that impulse
+  double min_speed = 0.0;    // m/s along s
+};
+
+// One drag along track `track`: settle, then measure the window into `sums`.
+void dragTrack(const TribometerSurfaces& surfaces, const TribometerSettings& settings,
+               double angle_deg, int track, DragSums& sums) {
+  tribo::Rig rig = tribo::makeRig(surfaces, settings, angle_deg, true, track);
+  World& world = *rig.world;
+  const SpringDesc spring = dragSpring(rig, settings);
+  world.addSpring(spring);
+  // Settle: the spring stretches until the block breaks away and the start-up transient dies.
+  const int settle = static_cast<int>(std::ceil(settings.drag_settle / settings.dt - 1e-9));
+  const int window = static_cast<int>(std::ceil(settings.drag_window / settings.dt - 1e-9));
+  for (int i = 0; i < settle; ++i) world.step();
+  // Measure: the force each step applies, the contacts' coefficients, the slowest speed.
+  for (int i = 0; i < window; ++i) {
+    sums.force_dt += springForce(world, spring).dot(rig.slide) * settings.dt;
+    world.step();
+    const tribo::ContactLoad load = tribo::blockContactLoad(world, rig.block, rig.slide);
+    sums.impulse += load.impulse;
+    sums.weighted_mu += load.weighted_mu;
+    const double speed = world.body(rig.block).linear_velocity.dot(rig.slide);
+    sums.min_speed = std::min(sums.min_speed, speed);
+  }
+}
+
+}  // namespace
+
+DragResult runDragTest(const TribometerSurfaces& surfaces, const TribometerSettings& settings,
+                       double angle_deg) {
+  validateTribometerSettings(settings);
+  // Every track's sums pooled: forces and impulses add up, the slowest speed is kept.
+  DragSums sums;
+  sums.min_speed = settings.drag_speed;
+  for (int track = 0; track < settings.tracks; ++track)
+    dragTrack(surfaces, settings, angle_deg, track, sums);
+  // Steady sliding: the block never stopped (below a tenth of the drive's speed) in a window.
+  DragResult result;
+  result.min_speed = sums.min_speed;
+  result.mu_model = sums.impulse > 0.0 ? sums.weighted_mu / sums.impulse : settings.friction.mu0;
+  if (sums.min_speed > 0.1 * settings.drag_speed && sums.impulse > 0.0)
+    result.mu_k = sums.force_dt / sums.impulse;
+  return result;
+}
+
+}  // namespace asperity
