@@ -17,6 +17,7 @@ namespace asperity::cli {
 void registerAllCommands(CLI::App& app) {
   registerTextureCommand(app);
   registerConeCommand(app);
+  registerTribometerCommand(app);
   registerRunCommand(app);
   registerSweepCommand(app);
   registerPatchCommand(app);

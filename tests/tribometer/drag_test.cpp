@@ -24,7 +24,7 @@ void expectKineticEqualsModel(const TribometerSurfaces& surfaces, double mu0) {
   ASSERT_EQ(r.directions.size(), 16u);
   for (const TribometerDirection& d : r.directions) {
     ASSERT_TRUE(d.mu_k.has_value()) << "no steady sliding at " << d.angle_deg << " deg";
-    EXPECT_TRUE(near(*d.mu_k, d.mu_model, 0.05, 0.002)) << d.angle_deg << " deg";
+    EXPECT_TRUE(near(*d.mu_k, *d.mu_model, 0.05, 0.002)) << d.angle_deg << " deg";
   }
 }
 
@@ -118,7 +118,7 @@ TEST(DragTest, ConstantFrictionGivesMu0) {
   for (const TribometerDirection& d : r.directions) {
     ASSERT_TRUE(d.mu_k.has_value());
     EXPECT_TRUE(near(*d.mu_k, 0.35, 0.005)) << d.angle_deg;
-    EXPECT_TRUE(near(d.mu_model, 0.35, 1e-6)) << d.angle_deg;
+    EXPECT_TRUE(near(*d.mu_model, 0.35, 1e-6)) << d.angle_deg;
   }
 }
 

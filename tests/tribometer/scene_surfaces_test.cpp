@@ -35,7 +35,7 @@ TEST(SceneSurfaces, TheBodiesSurfacesAndTheScenesFriction) {
   const TribometerResult r = runTribometer(s, settings);
   ASSERT_TRUE(r.directions[0].mu_k.has_value());
   EXPECT_GT(*r.directions[0].mu_k, 0.3);
-  EXPECT_TRUE(near(*r.directions[0].mu_k, r.directions[0].mu_model, 0.05));
+  EXPECT_TRUE(near(*r.directions[0].mu_k, *r.directions[0].mu_model, 0.05));
 }
 
 TEST(SceneSurfaces, AnUnknownBodyIsAnErrorListingTheBodies) {

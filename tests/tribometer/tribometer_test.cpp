@@ -22,8 +22,9 @@ TEST(Tribometer, DirectionsAreEvenlySpacedFromU) {
   ASSERT_EQ(r.directions.size(), 6u);
   for (int k = 0; k < 6; ++k)
     EXPECT_DOUBLE_EQ(r.directions[static_cast<size_t>(k)].angle_deg, 60.0 * k);
-  // Without the tilt table there is no static coefficient.
+  // Without the tilt table there is no static coefficient; the drag gives the other two.
   EXPECT_FALSE(r.directions[0].mu_s.has_value());
+  EXPECT_TRUE(r.directions[0].mu_k.has_value() && r.directions[0].mu_model.has_value());
 }
 
 TEST(Tribometer, SameNumbersOnAnyThreadCount) {

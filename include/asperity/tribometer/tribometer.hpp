@@ -82,8 +82,8 @@ struct TribometerDirection {
   double angle_deg = 0.0;
   std::optional<double> mu_s;
   std::optional<double> mu_k;
-  double mu_model = 0.0;
-  bool toppled = false;  // the tilt table's block toppled before sliding
+  std::optional<double> mu_model;  // none when the drag test did not run
+  bool toppled = false;            // the tilt table's block toppled before sliding
 };
 
 struct TribometerResult {

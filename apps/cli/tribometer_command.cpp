@@ -1,0 +1,202 @@
+// `asperity tribometer`: the tilt table and the drag test of a block on a plate in N
+// directions (src/tribometer), for two textures or two bodies of a scene; a table, JSON, and an
+// SVG / PNG figure of mu_s, mu_k and mu_model.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "asperity/error.hpp"
+#include "asperity/scene/scene.hpp"
+#include "asperity/tribometer/tribometer.hpp"
+#include "cli_common.hpp"
+#include "tribometer_plot.hpp"
+
+namespace asperity::cli {
+namespace {
+
+struct TribometerOptions {
+  std::string b_path;  // the plate (B); empty with --scene
+  std::string a_path;  // the block (A); empty: flat
+  std::string scene;
+  std::vector<std::string> bodies;  // block, plate
+  double k_a = 1.0, k_b = 1.0, mu0 = 0.0;
+  double texture_size = 0.256;
+  bool directx = false;
+  std::vector<std::string> tests{"tilt", "drag"};
+  TribometerSettings settings;
+  bool json = false;
+  std::string svg, png;
+};
+
+// The surfaces and settings the options name: two textures, or two bodies of a scene (whose
+// friction settings apply unless --mu0 and the gains are given).
+TribometerSurfaces surfacesFor(const TribometerOptions& opt, const CLI::App& sub,
+                               TribometerSettings& settings) {
+  Diagnostics diagnostics;
+  diagnostics.setSink(printWarning);
+  if (!opt.scene.empty()) {
+    if (!opt.b_path.empty()) throw Error("give either B.png or --scene S --bodies A,B, not both");
+    if (opt.bodies.size() != 2) throw Error("--bodies: expected two body names A,B");
+    TribometerSurfaces s =
+        sceneSurfaces(loadScene(opt.scene), opt.bodies[0], opt.bodies[1], settings, diagnostics);
+    if (sub.count("--mu0")) settings.friction.mu0 = opt.mu0;
+    if (sub.count("--k-a")) s.block.gain = opt.k_a;
+    if (sub.count("--k-b")) s.plate.gain = opt.k_b;
+    return s;
+  }
+  if (opt.b_path.empty()) throw Error("give the plate's texture B.png (or --scene S --bodies A,B)");
+  TribometerSurfaces s;
+  settings.friction.mu0 = opt.mu0;
+  s.plate = tribometerSurface(opt.b_path, opt.k_b, opt.texture_size, diagnostics, opt.directx);
+  s.block.gain = opt.k_a;
+  s.block.texture_size = opt.texture_size;
+  if (!opt.a_path.empty())
+    s.block = tribometerSurface(opt.a_path, opt.k_a, opt.texture_size, diagnostics, opt.directx);
+  return s;
+}
+
+// A coefficient as JSON: the number, or null where the test gave none.
+nlohmann::ordered_json orNull(const std::optional<double>& x) {
+  return x ? nlohmann::ordered_json(*x) : nlohmann::ordered_json(nullptr);
+}
+
+// {"directions": [{"angle_deg", "mu_s", "mu_k", "mu_model"}, ...]}.
+nlohmann::ordered_json resultJson(const TribometerResult& r) {
+  nlohmann::ordered_json dirs = nlohmann::ordered_json::array();
+  for (const TribometerDirection& d : r.directions)
+    dirs.push_back({{"angle_deg", d.angle_deg},
+                    {"mu_s", orNull(d.mu_s)},
+                    {"mu_k", orNull(d.mu_k)},
+                    {"mu_model", orNull(d.mu_model)}});
+  return {{"directions", dirs}};
+}
+
+// A table cell: the number, or why there is none.
+std::string cell(const std::optional<double>& x, const char* none) {
+  char buf[32];
+  if (x)
+    std::snprintf(buf, sizeof(buf), "%9.4f", *x);
+  else
+    std::snprintf(buf, sizeof(buf), "%9s", none);
+  return buf;
+}
+
+// The readable form: what was tested, then one row per direction.
+void printTable(const std::string& subtitle, const TribometerResult& r) {
+  std::cout << subtitle << "\n  angle_deg       mu_s       mu_k   mu_model\n";
+  for (const TribometerDirection& d : r.directions) {
+    char angle[32];
+    std::snprintf(angle, sizeof(angle), "  %9.2f", d.angle_deg);
+    std::cout << angle << "  " << cell(d.mu_s, d.toppled ? "toppled" : "no slide") << "  "
+              << cell(d.mu_k, "stuck") << "  " << cell(d.mu_model, "-") << '\n';
+  }
+}
+
+// The subcommand's action: surfaces, runs, then table or JSON, then the figure.
+void runTribometerCommand(const TribometerOptions& opt, const CLI::App& sub) {
+  TribometerSettings settings = opt.settings;
+  const TribometerSurfaces surfaces = surfacesFor(opt, sub, settings);
+  settings.tilt = std::find(opt.tests.begin(), opt.tests.end(), "tilt") != opt.tests.end();
+  settings.drag = std::find(opt.tests.begin(), opt.tests.end(), "drag") != opt.tests.end();
+  const TribometerResult result = runTribometer(surfaces, settings);
+  char subtitle[200];
+  std::snprintf(subtitle, sizeof(subtitle),
+                "mu0 = %g, k_A = %g, k_B = %g, block %g x %g x %g m, %g N, sampler %s",
+                settings.friction.mu0, surfaces.block.gain, surfaces.plate.gain,
+                settings.block_size, settings.block_size, settings.block_height, settings.load,
+                settings.sampler.c_str());
+  if (opt.json)
+    std::cout << resultJson(result).dump(2) << '\n';
+  else
+    printTable(subtitle, result);
+  // The figure names the textures as given (or the scene's bodies).
+  TribometerPlot plot{surfaces.plate.normal_map.get(),
+                      surfaces.block.normal_map.get(),
+                      opt.scene.empty() ? opt.b_path : opt.bodies[1],
+                      opt.scene.empty() ? opt.a_path : opt.bodies[0],
+                      subtitle,
+                      result};
+  if (!opt.svg.empty()) writeTribometerPlot(plot, opt.svg, true);
+  if (!opt.png.empty()) writeTribometerPlot(plot, opt.png, false);
+}
+
+// Options shared with `asperity cone`: the textures and the gains of Eq. 7.
+void addSurfaceOptions(CLI::App* sub, TribometerOptions& opt) {
+  sub->add_option("B", opt.b_path, "Plate's normal map (PNG, or gen:NAME:SEED[:P=V,...])");
+  sub->add_option("--a", opt.a_path, "Block's normal map (PNG or gen:...); default flat");
+  sub->add_option("--scene", opt.scene, "Scene whose two bodies are tested (with --bodies)");
+  sub->add_option("--bodies", opt.bodies, "A,B: the block's and the plate's body names")
+      ->delimiter(',')
+      ->expected(2);
+  sub->add_flag("--directx", opt.directx, "Read green as -bitangent (DirectX convention)");
+  sub->add_option("--k-a", opt.k_a, "Gain k_A of the block")
+      ->check(numberInRange(0.0, 1000.0))
+      ->capture_default_str();
+  sub->add_option("--k-b", opt.k_b, "Gain k_B of the plate")
+      ->check(numberInRange(0.0, 1000.0))
+      ->capture_default_str();
+  sub->add_option("--mu0", opt.mu0, "Nominal coefficient mu0")
+      ->check(numberInRange(0.0, 1000.0))
+      ->capture_default_str();
+  sub->add_option("--mu-max", opt.settings.friction.mu_max, "Clamp of the ploughing term")
+      ->check(numberInRange(1e-3, 1000.0))
+      ->capture_default_str();
+  sub->add_option("--texture-size", opt.texture_size, "Metres one texture repeat covers")
+      ->check(numberInRange(1e-4, 100.0))
+      ->capture_default_str();
+}
+
+// The rig and the runs: block, load, patch, directions, tests, tracks, threads.
+void addRigOptions(CLI::App* sub, TribometerOptions& opt) {
+  TribometerSettings& s = opt.settings;
+  sub->add_option("--directions", s.directions, "Number of test directions N")
+      ->check(CLI::Range(1, 360))
+      ->capture_default_str();
+  sub->add_option("--block-size", s.block_size, "Side of the block's square base (m)")
+      ->check(numberInRange(1e-3, 10.0))
+      ->capture_default_str();
+  sub->add_option("--block-height", s.block_height, "Height of the block (m)")
+      ->check(numberInRange(1e-3, 10.0))
+      ->capture_default_str();
+  sub->add_option("--load", s.load, "Normal load: the block's weight (N)")
+      ->check(numberInRange(1e-3, 1e6))
+      ->capture_default_str();
+  sub->add_option("--patch-width", s.friction.patch_width, "Patch width w (m)")
+      ->check(numberInRange(1e-5, 10.0))
+      ->capture_default_str();
+  sub->add_option("--patch-res", s.friction.patch_resolution, "Patch resolution R (pixels)")
+      ->check(CLI::Range(1, 1024))
+      ->capture_default_str();
+  sub->add_option("--sampler", s.sampler, "Friction provider: cpu, cone or constant")
+      ->check(CLI::IsMember({"cpu", "cone", "constant"}))
+      ->capture_default_str();
+  sub->add_option("--tests", opt.tests, "Which tests: tilt, drag (comma separated)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"tilt", "drag"}));
+  sub->add_option("--tracks", s.tracks, "Runs per test and direction, side by side")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
+  s.threads = 0;
+  sub->add_option("--threads", s.threads, "Threads (0 = every core); same numbers on any")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
+}
+
+}  // namespace
+
+void registerTribometerCommand(CLI::App& app) {
+  auto opt = std::make_shared<TribometerOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "tribometer", "Tilt table and drag test of a block on a plate in N directions (SPEC 12)");
+  addSurfaceOptions(sub, *opt);
+  addRigOptions(sub, *opt);
+  sub->add_flag("--json", opt->json, "Print JSON instead of a table");
+  sub->add_option("--svg", opt->svg, "Write the figure as SVG");
+  sub->add_option("--png", opt->png, "Write the figure as PNG");
+  sub->callback([opt, sub]() { runTribometerCommand(*opt, *sub); });
+}
+
+}  // namespace asperity::cli
