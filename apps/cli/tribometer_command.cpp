@@ -9,7 +9,6 @@
 #include <nlohmann/json.hpp>
 
 #include "asperity/error.hpp"
-#include "asperity/scene/scene.hpp"
 #include "asperity/tribometer/tribometer.hpp"
 #include "cli_common.hpp"
 #include "tribometer_plot.hpp"
@@ -31,31 +30,20 @@ struct TribometerOptions {
   std::string svg, png;
 };
 
-// The surfaces and settings the options name: two textures, or two bodies of a scene (whose
-// friction settings apply unless --mu0 and the gains are given).
-TribometerSurfaces surfacesFor(const TribometerOptions& opt, const CLI::App& sub,
-                               TribometerSettings& settings) {
-  Diagnostics diagnostics;
-  diagnostics.setSink(printWarning);
-  if (!opt.scene.empty()) {
-    if (!opt.b_path.empty()) throw Error("give either B.png or --scene S --bodies A,B, not both");
-    if (opt.bodies.size() != 2) throw Error("--bodies: expected two body names A,B");
-    TribometerSurfaces s =
-        sceneSurfaces(loadScene(opt.scene), opt.bodies[0], opt.bodies[1], settings, diagnostics);
-    if (sub.count("--mu0")) settings.friction.mu0 = opt.mu0;
-    if (sub.count("--k-a")) s.block.gain = opt.k_a;
-    if (sub.count("--k-b")) s.plate.gain = opt.k_b;
-    return s;
-  }
-  if (opt.b_path.empty()) throw Error("give the plate's texture B.png (or --scene S --bodies A,B)");
-  TribometerSurfaces s;
-  settings.friction.mu0 = opt.mu0;
-  s.plate = tribometerSurface(opt.b_path, opt.k_b, opt.texture_size, diagnostics, opt.directx);
-  s.block.gain = opt.k_a;
-  s.block.texture_size = opt.texture_size;
-  if (!opt.a_path.empty())
-    s.block = tribometerSurface(opt.a_path, opt.k_a, opt.texture_size, diagnostics, opt.directx);
-  return s;
+// What the options name: two textures, or two bodies of a scene (whose friction settings apply
+// unless --mu0 and the gains are given).
+TribometerSource sourceFor(const TribometerOptions& opt, const CLI::App& sub) {
+  TribometerSource source;
+  source.plate = opt.b_path;
+  source.block = opt.a_path;
+  source.scene = opt.scene;
+  if (opt.bodies.size() == 2) source.block_body = opt.bodies[0], source.plate_body = opt.bodies[1];
+  if (sub.count("--k-a")) source.k_a = opt.k_a;
+  if (sub.count("--k-b")) source.k_b = opt.k_b;
+  if (sub.count("--mu0")) source.mu0 = opt.mu0;
+  source.texture_size = opt.texture_size;
+  source.directx = opt.directx;
+  return source;
 }
 
 // A coefficient as JSON: the number, or null where the test gave none.
@@ -98,7 +86,10 @@ void printTable(const std::string& subtitle, const TribometerResult& r) {
 // The subcommand's action: surfaces, runs, then table or JSON, then the figure.
 void runTribometerCommand(const TribometerOptions& opt, const CLI::App& sub) {
   TribometerSettings settings = opt.settings;
-  const TribometerSurfaces surfaces = surfacesFor(opt, sub, settings);
+  Diagnostics diagnostics;
+  diagnostics.setSink(printWarning);
+  const TribometerSurfaces surfaces =
+      resolveTribometerSource(sourceFor(opt, sub), settings, diagnostics);
   settings.tilt = std::find(opt.tests.begin(), opt.tests.end(), "tilt") != opt.tests.end();
   settings.drag = std::find(opt.tests.begin(), opt.tests.end(), "drag") != opt.tests.end();
   const TribometerResult result = runTribometer(surfaces, settings);

@@ -8,9 +8,9 @@
 //
 // A continuous ramp overshoots: the block must gain speed to slide the threshold, which at the
 // rate w takes a tilt of about w^(2/3) (6 x / g)^(1/3) beyond the true angle (x = threshold;
-// 0.11 deg at the default 0.2 deg/s and 1 mm). A slow ramp from 0 to 45 degrees would take minutes of simulated
-// time, so the tilt is ramped in passes: fast from 0, then each slower pass restarts a fresh
-// world a little below where the last one slid (twice its overshoot), down to the slow rate.
+// 0.11 deg at the default 0.2 deg/s and 1 mm). A slow ramp from 0 to 45 degrees would take minutes
+// of simulated time, so the tilt is ramped in passes: fast from 0, then each slower pass restarts a
+// fresh world a little below where the last one slid (twice its overshoot), down to the slow rate.
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -1,14 +1,12 @@
-// The virtual tribometer's front: settings checked, the runs of every direction side by side on
-// a thread pool, and the surfaces named by text or by a scene's bodies (tribometer.hpp).
+// The virtual tribometer's front: settings checked, and the runs of every direction side by
+// side on a thread pool (tribometer.hpp).
 #include "asperity/tribometer/tribometer.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <string>
 
 #include "asperity/error.hpp"
-#include "asperity/friction/directions.hpp"
-#include "asperity/scene/scene.hpp"
+#include "asperity/world/world.hpp"
 #include "parallel/thread_pool.hpp"
 
 namespace asperity {
@@ -20,33 +18,6 @@ void checkRange(const char* name, double value, double lo, double hi) {
   if (!(value >= lo && value <= hi))
     throw Error(std::string("tribometer: ") + name + " must be in [" + std::to_string(lo) + ", " +
                 std::to_string(hi) + "], got " + std::to_string(value));
-}
-
-// Throws naming `text` unless it is a whole number in [0, 2^64).
-uint64_t parseSeed(const std::string& text, const std::string& whole) {
-  uint64_t seed = 0;
-  const auto r = std::from_chars(text.data(), text.data() + text.size(), seed);
-  if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size())
-    throw Error("texture '" + whole + "': seed must be a whole number, got '" + text + "'");
-  return seed;
-}
-
-// `PARAM=VALUE,PARAM=VALUE` into the spec (`size` sets the texels per side).
-void parseGeneratorParams(const std::string& text, const std::string& whole, GeneratorSpec& spec) {
-  size_t begin = 0;
-  while (begin <= text.size()) {
-    const size_t end = std::min(text.find(',', begin), text.size());
-    const std::string item = text.substr(begin, end - begin);
-    const size_t eq = item.find('=');
-    if (eq == std::string::npos || eq == 0)
-      throw Error("texture '" + whole + "': expected PARAM=VALUE, got '" + item + "'");
-    const std::string name = item.substr(0, eq), value = item.substr(eq + 1);
-    if (name == "size")
-      spec.size = static_cast<int>(std::min<uint64_t>(parseSeed(value, whole), 1u << 30));
-    else
-      spec.params[name] = value;
-    begin = end + 1;
-  }
 }
 
 }  // namespace
@@ -105,35 +76,6 @@ TribometerResult runTribometer(const TribometerSurfaces& surfaces,
     }
   });
   return result;
-}
-
-SurfaceSource textureSource(const std::string& text) {
-  SurfaceSource source;
-  if (text.rfind("gen:", 0) != 0) {
-    source.normal_map_file = text;
-    return source;
-  }
-  // gen:NAME:SEED[:PARAMS]
-  const size_t name_end = text.find(':', 4);
-  if (name_end == std::string::npos || name_end == 4)
-    throw Error("texture '" + text + "': expected gen:NAME:SEED[:PARAM=VALUE,...]");
-  source.generator.name = text.substr(4, name_end - 4);
-  const size_t seed_end = text.find(':', name_end + 1);
-  source.generator.seed = parseSeed(text.substr(name_end + 1, seed_end - (name_end + 1)), text);
-  if (seed_end != std::string::npos)
-    parseGeneratorParams(text.substr(seed_end + 1), text, source.generator);
-  return source;
-}
-
-Surface tribometerSurface(const std::string& text, double gain, double texture_size,
-                          Diagnostics& diagnostics, bool directx) {
-  Surface surface;
-  surface.source = textureSource(text);
-  if (directx) surface.source.green = GreenConvention::DirectX;
-  surface.gain = gain;
-  surface.texture_size = texture_size;
-  resolveSurface(surface, diagnostics);
-  return surface;
 }
 
 }  // namespace asperity

@@ -121,4 +121,23 @@ TribometerSurfaces sceneSurfaces(const SceneDesc& scene, const std::string& bloc
                                  const std::string& plate, TribometerSettings& settings,
                                  Diagnostics& diagnostics);
 
+// What names the two surfaces, as the CLI and Python take it: two texture texts, or two bodies
+// of a scene file.
+struct TribometerSource {
+  std::string plate;  // texture text of B (textureSource); empty with a scene
+  std::string block;  // texture text of A; empty: flat
+  std::string scene;  // scene file; names the bodies below
+  std::string block_body, plate_body;
+  // Given: override the scene's (or the defaults k_A = k_B = 1, mu0 = 0 of `asperity cone`).
+  std::optional<double> k_a, k_b, mu0;
+  double texture_size = 0.256;  // metres per repeat of a texture named by text
+  bool directx = false;         // PNG files' green is -bitangent
+};
+
+// The surfaces `source` names, resolved; mu0 (and with a scene, its friction settings and
+// sampler) go into `settings`. Throws asperity::Error for both or neither of a plate texture and
+// a scene, a missing body name, and whatever resolving the textures or the scene throws.
+TribometerSurfaces resolveTribometerSource(const TribometerSource& source,
+                                           TribometerSettings& settings, Diagnostics& diagnostics);
+
 }  // namespace asperity
