@@ -17,10 +17,11 @@ from ._asperity import (  # noqa: F401  (re-exported)
     generate_texture,
     load_normal_map,
     load_scene,
+    tribometer,
 )
 
 __all__ = ["Scene", "World", "cone", "generate_texture", "load_normal_map", "load_scene",
-           "sweep"]
+           "sweep", "tribometer"]
 
 
 def _scene_source(scene):
