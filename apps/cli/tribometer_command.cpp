@@ -11,7 +11,7 @@
 #include "asperity/error.hpp"
 #include "asperity/tribometer/tribometer.hpp"
 #include "cli_common.hpp"
-#include "tribometer_plot.hpp"
+#include "polar_figure.hpp"
 
 namespace asperity::cli {
 namespace {
@@ -83,6 +83,47 @@ void printTable(const std::string& subtitle, const TribometerResult& r) {
   }
 }
 
+// One coefficient per direction, NaN where the test gave none.
+std::vector<double> column(const TribometerResult& r,
+                           std::optional<double> TribometerDirection::*field) {
+  std::vector<double> values;
+  for (const TribometerDirection& d : r.directions)
+    values.push_back((d.*field).value_or(std::nan("")));
+  return values;
+}
+
+// The figure: the maps as named (or the scene's bodies), mu_s, mu_k, and mu_model dashed on top
+// (where it mostly covers mu_k).
+void writeFigure(const TribometerOptions& opt, const TribometerSurfaces& surfaces,
+                 const std::string& subtitle, const TribometerResult& result) {
+  PolarFigure f;
+  f.plate = surfaces.plate.normal_map.get();
+  f.block = surfaces.block.normal_map.get();
+  f.plate_name = opt.scene.empty() ? opt.b_path : opt.bodies[1];
+  f.block_name = opt.scene.empty() ? opt.a_path : opt.bodies[0];
+  f.title = "Tribometer: block A = " + (f.block_name.empty() ? "flat" : f.block_name) +
+            " on plate B = " + f.plate_name;
+  f.subtitle = subtitle;
+  std::vector<double> angles;
+  for (const TribometerDirection& d : result.directions) angles.push_back(d.angle_deg);
+  f.curves = {{angles,
+               column(result, &TribometerDirection::mu_s),
+               {plot::kRed, 0.0, 1.5, false, 3.0, true},
+               "mu_s: tilt table"},
+              {angles,
+               column(result, &TribometerDirection::mu_k),
+               {plot::kBlue, 0.0, 2.0, false, 3.5, true},
+               "mu_k: drag test"},
+              {angles,
+               column(result, &TribometerDirection::mu_model),
+               {plot::kGreen, 0.0, 2.0, true, 0.0, true},
+               "mu_model: the contacts' mu"}};
+  f.notes = {"gaps: no slide / no steady sliding", "radius: mu against sliding toward",
+             "that direction; u, v: the plate's axes"};
+  if (!opt.svg.empty()) writePolarFigure(f, opt.svg, true);
+  if (!opt.png.empty()) writePolarFigure(f, opt.png, false);
+}
+
 // The subcommand's action: surfaces, runs, then table or JSON, then the figure.
 void runTribometerCommand(const TribometerOptions& opt, const CLI::App& sub) {
   TribometerSettings settings = opt.settings;
@@ -103,15 +144,7 @@ void runTribometerCommand(const TribometerOptions& opt, const CLI::App& sub) {
     std::cout << resultJson(result).dump(2) << '\n';
   else
     printTable(subtitle, result);
-  // The figure names the textures as given (or the scene's bodies).
-  TribometerPlot plot{surfaces.plate.normal_map.get(),
-                      surfaces.block.normal_map.get(),
-                      opt.scene.empty() ? opt.b_path : opt.bodies[1],
-                      opt.scene.empty() ? opt.a_path : opt.bodies[0],
-                      subtitle,
-                      result};
-  if (!opt.svg.empty()) writeTribometerPlot(plot, opt.svg, true);
-  if (!opt.png.empty()) writeTribometerPlot(plot, opt.png, false);
+  if (!opt.svg.empty() || !opt.png.empty()) writeFigure(opt, surfaces, subtitle, result);
 }
 
 // Options shared with `asperity cone`: the textures and the gains of Eq. 7.

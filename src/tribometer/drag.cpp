@@ -1,5 +1,6 @@
-// The drag test (tribometer.hpp): the block, its rotation locked, pulled along s at constant
-// speed by a stiff, critically damped spring; mu_k = mean spring force along s / mean normal
+// The drag test (tribometer.hpp): the block, guided so that it cannot turn on the plate, pulled
+// along s at constant speed by a stiff, critically damped spring attached at the middle of its
+// base (in the plane of the friction forces, so that the pull does not tip it); mu_k = mean spring force along s / mean normal
 // force of the plate in the measured window (the weight less what the spring carries: the block
 // settles a little below the spring's line, which lifts it by about 1 %), mu_model = the
 // load-weighted mean coefficient of the block's contacts.
@@ -13,13 +14,14 @@ namespace asperity {
 
 namespace {
 
-// The drive: a spring from the block's centre to a target moving along s from that centre.
+// The drive: a spring from the middle of the block's base to a target moving along s from there.
 SpringDesc dragSpring(const tribo::Rig& rig, const TribometerSettings& settings) {
   const double omega = 2.0 * kPi * settings.spring_frequency;
   SpringDesc spring;
   spring.name = "drive";
   spring.body = rig.block;
-  spring.target = rig.world->body(rig.block).descriptionPose().position;
+  spring.local_point = Vec3(0.0, 0.0, -0.5 * settings.block_height);
+  spring.target = rig.world->body(rig.block).descriptionPose().apply(spring.local_point);
   spring.target_velocity = settings.drag_speed * rig.slide;
   spring.stiffness = rig.mass * omega * omega;
   spring.damping = 2.0 * rig.mass * omega;  // critical
@@ -45,7 +47,8 @@ struct DragSums {
 // One drag along track `track`: settle, then measure the window into `sums`.
 void dragTrack(const TribometerSurfaces& surfaces, const TribometerSettings& settings,
                double angle_deg, int track, DragSums& sums) {
-  tribo::Rig rig = tribo::makeRig(surfaces, settings, angle_deg, true, track);
+  tribo::Rig rig = tribo::makeRig(surfaces, settings, angle_deg, true,
+                                  tribo::trackStart(surfaces, settings, angle_deg, track));
   World& world = *rig.world;
   const SpringDesc spring = dragSpring(rig, settings);
   world.addSpring(spring);

@@ -31,7 +31,7 @@ WorldSettings rigSettings(const TribometerSettings& settings, const Vec3& slide)
 }  // namespace
 
 Rig makeRig(const TribometerSurfaces& surfaces, const TribometerSettings& settings,
-            double angle_deg, bool lock_rotation, int track) {
+            double angle_deg, bool guided, const Vec2& position) {
   Rig rig;
   const double a = angle_deg * kPi / 180.0;
   rig.slide = Vec3(std::cos(a), std::sin(a), 0.0);
@@ -45,16 +45,25 @@ Rig makeRig(const TribometerSurfaces& surfaces, const TribometerSettings& settin
   // The block: a box resting on the plate, its weight the normal load, surface A underneath.
   const Vec3 half(0.5 * settings.block_size, 0.5 * settings.block_size,
                   0.5 * settings.block_height);
-  const double across = surfaces.plate.texture_size * (track + 0.5) / settings.tracks;
-  const Vec3 start = across * Vec3::UnitZ().cross(rig.slide) + Vec3(0.0, 0.0, half.z());
+  // Set 0.1 mm into the plate: touching at the first step, rather than dropping onto it then.
+  const Vec3 start(position.x(), position.y(), half.z() - 1e-4);
   BodyDesc block = boxDesc("block", half, {start, Quat::Identity()});
   block.shapes[0].surface = surfaces.block;
   rig.mass = settings.load / settings.gravity;
   block.mass_override = rig.mass;
   rig.block = rig.world->createBody(block);
-  // The guide of the drag test: an infinite inertia, so no contact or spring turns the block.
-  if (lock_rotation) rig.world->body(rig.block).inverse_inertia_local.setZero();
+  // The guide of the drag test: the box's principal z is the world's z, so a millionfold
+  // inertia about it keeps the block from turning on the plate (0 would break the gyroscopic
+  // step, which inverts the inertia).
+  if (guided) rig.world->body(rig.block).inverse_inertia_local.z() *= 1e-6;
   return rig;
+}
+
+Vec2 trackStart(const TribometerSurfaces& surfaces, const TribometerSettings& settings,
+                double angle_deg, int track) {
+  const double a = angle_deg * kPi / 180.0;
+  const double across = surfaces.plate.texture_size * (track + 0.5) / settings.tracks;
+  return across * Vec2(-std::sin(a), std::cos(a));
 }
 
 ContactLoad blockContactLoad(const World& world, BodyId block, const Vec3& slide) {
@@ -66,6 +75,8 @@ ContactLoad blockContactLoad(const World& world, BodyId block, const Vec3& slide
     const double mu = c.mu.along(std::atan2(e.dot(c.b), e.dot(c.t)));
     load.impulse += c.lambda_n;
     load.weighted_mu += mu * c.lambda_n;
+    load.contacts += 1;
+    load.mu_sum += mu;
   }
   return load;
 }

@@ -18,18 +18,27 @@ struct Rig {
   double mass = 0.0;           // kg
 };
 
-// A rig for the direction `angle_deg`. `lock_rotation`: the block cannot turn (the drag test's
-// guide), done by an infinite inertia. `track` (0 .. settings.tracks - 1) starts the block
-// beside the others, across s, so that the tracks cover one repeat of the plate's texture.
+// A rig for the direction `angle_deg`, the block's centre above `position` (m, on the plate).
+// `guided`: the block cannot turn about the plate's normal (the drag test's guide, done by a
+// millionfold inertia about its vertical axis); it may still pitch and roll, so that its four
+// corners share the load. (Locking every rotation was tried: with an infinite inertia the four
+// normal rows no longer couple and the first corner in the solver's order takes the whole load.)
 // Throws asperity::Error for an unknown sampler.
 Rig makeRig(const TribometerSurfaces& surfaces, const TribometerSettings& settings,
-            double angle_deg, bool lock_rotation, int track);
+            double angle_deg, bool guided, const Vec2& position);
+
+// Where track `track` (0 .. settings.tracks - 1) starts: beside the others, across the direction
+// `angle_deg`, the tracks one repeat of the plate's texture apart in all.
+Vec2 trackStart(const TribometerSurfaces& surfaces, const TribometerSettings& settings,
+                double angle_deg, int track);
 
 // Sums over the block's contacts of one step: normal impulse, and the coefficient resisting the
 // block's sliding along s weighted by it (SPEC 1: the bound on the block's friction along -s).
 struct ContactLoad {
   double impulse = 0.0;      // sum of lambda_n (N s)
   double weighted_mu = 0.0;  // sum of mu lambda_n
+  int contacts = 0;
+  double mu_sum = 0.0;  // sum of mu, unweighted
 };
 ContactLoad blockContactLoad(const World& world, BodyId block, const Vec3& slide);
 

@@ -56,7 +56,8 @@ Vec3 tiltedGravity(const TribometerSettings& settings, const Vec3& slide, double
 // `end_deg`, in a fresh world.
 TiltPass rampTilt(const TribometerSurfaces& surfaces, const TribometerSettings& settings,
                   double angle_deg, int track, double start_deg, double rate_deg, double end_deg) {
-  tribo::Rig rig = tribo::makeRig(surfaces, settings, angle_deg, false, track);
+  tribo::Rig rig = tribo::makeRig(surfaces, settings, angle_deg, false,
+                                  tribo::trackStart(surfaces, settings, angle_deg, track));
   World& world = *rig.world;
   const std::array<Vec3, 4> start = tribo::bottomCorners(world, rig.block);
   TiltPass pass;

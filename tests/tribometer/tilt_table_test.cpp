@@ -25,15 +25,15 @@ TribometerSettings tiltOnly(double mu0, const std::string& sampler) {
 }
 
 TEST(TiltTable, SlidesAtTheAngleWhoseTangentIsMu) {
-  // Coulomb: tan(theta_s) = mu, never below; the slow ramp's overshoot (about 0.1 degree at
-  // 0.2 deg/s) adds at most 0.0025.
+  // Coulomb: tan(theta_s) = mu, never below; the slow ramp overshoots by about 0.1 degree at
+  // 0.2 deg/s (docs/tribometer.md), at most 0.15.
   for (double mu : {0.1, 0.3, 0.8}) {
     const TiltResult r =
         runTiltTest(tribometerPair("flat", "flat"), tiltOnly(mu, "constant"), 30.0);
     ASSERT_TRUE(r.mu_s.has_value()) << mu;
     EXPECT_FALSE(r.toppled);
     EXPECT_GE(*r.mu_s, mu * (1.0 - 1e-3)) << "it slid before the true angle";
-    EXPECT_LE(*r.mu_s, mu + 0.0025) << mu;
+    EXPECT_LE(*r.mu_s, std::tan(std::atan(mu) + 0.15 * kPi / 180.0)) << mu;
   }
 }
 
