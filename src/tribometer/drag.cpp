@@ -1,9 +1,9 @@
 // The drag test (tribometer.hpp): the block, guided so that it cannot turn on the plate, pulled
 // along s at constant speed by a stiff, critically damped spring attached at the middle of its
-// base (in the plane of the friction forces, so that the pull does not tip it); mu_k = mean spring force along s / mean normal
-// force of the plate in the measured window (the weight less what the spring carries: the block
-// settles a little below the spring's line, which lifts it by about 1 %), mu_model = the
-// load-weighted mean coefficient of the block's contacts.
+// base (in the plane of the friction forces, so that the pull does not tip it); mu_k = mean spring
+// force along s / mean normal force of the plate in the measured window (the weight less what the
+// spring carries: the block settles a little below the spring's line, which lifts it by about 1 %),
+// mu_model = the load-weighted mean coefficient of the block's contacts.
 #include <algorithm>
 #include <cmath>
 
@@ -36,12 +36,18 @@ Vec3 springForce(const World& world, const SpringDesc& spring) {
          spring.damping * (body.pointVelocity(p) - spring.target_velocity);
 }
 
-// What a window measures, summed over steps (and tracks).
+// What a window measures, summed over steps (and tracks), each step weighted by the distance
+// the block slid in it: the spring's work, the normal force times the distance, and the
+// contacts' coefficients on the same weights. A steady slide's time means equal these; where
+// the speed wavers, time means would weight the places where the block slows down, and by how
+// much depends on the gains, which calibration's unit-gain runs would not reproduce.
 struct DragSums {
-  double force_dt = 0.0;     // spring force along s times dt (N s)
-  double impulse = 0.0;      // normal impulse of the block's contacts (N s)
-  double weighted_mu = 0.0;  // their coefficients times that impulse
-  double min_speed = 0.0;    // m/s along s
+  double work = 0.0;       // spring force along s times the distance (J)
+  double normal = 0.0;     // normal force of the block's contacts times the distance (N m)
+  double loaded_mu = 0.0;  // their coefficients times their share of that
+  double mean_mu = 0.0;    // the contacts' mean coefficient times the distance
+  double distance = 0.0;   // m slid with contacts
+  double min_speed = 0.0;  // m/s along s
 };
 
 // One drag along track `track`: settle, then measure the window into `sums`.
@@ -56,13 +62,18 @@ void dragTrack(const TribometerSurfaces& surfaces, const TribometerSettings& set
   const int settle = static_cast<int>(std::ceil(settings.drag_settle / settings.dt - 1e-9));
   const int window = static_cast<int>(std::ceil(settings.drag_window / settings.dt - 1e-9));
   for (int i = 0; i < settle; ++i) world.step();
-  // Measure: the force each step applies, the contacts' coefficients, the slowest speed.
+  // Measure: the force each step applies, the contacts' loads and coefficients, the distance.
   for (int i = 0; i < window; ++i) {
-    sums.force_dt += springForce(world, spring).dot(rig.slide) * settings.dt;
+    const double force = springForce(world, spring).dot(rig.slide);
+    const double before = world.body(rig.block).pose.position.dot(rig.slide);
     world.step();
+    const double moved = world.body(rig.block).pose.position.dot(rig.slide) - before;
     const tribo::ContactLoad load = tribo::blockContactLoad(world, rig.block, rig.slide);
-    sums.impulse += load.impulse;
-    sums.weighted_mu += load.weighted_mu;
+    sums.work += force * moved;
+    sums.normal += load.impulse / settings.dt * moved;
+    sums.loaded_mu += load.weighted_mu / settings.dt * moved;
+    sums.mean_mu += load.contacts > 0 ? load.mu_sum / load.contacts * moved : 0.0;
+    sums.distance += load.contacts > 0 ? moved : 0.0;
     const double speed = world.body(rig.block).linear_velocity.dot(rig.slide);
     sums.min_speed = std::min(sums.min_speed, speed);
   }
@@ -81,9 +92,10 @@ DragResult runDragTest(const TribometerSurfaces& surfaces, const TribometerSetti
   // Steady sliding: the block never stopped (below a tenth of the drive's speed) in a window.
   DragResult result;
   result.min_speed = sums.min_speed;
-  result.mu_model = sums.impulse > 0.0 ? sums.weighted_mu / sums.impulse : settings.friction.mu0;
-  if (sums.min_speed > 0.1 * settings.drag_speed && sums.impulse > 0.0)
-    result.mu_k = sums.force_dt / sums.impulse;
+  result.mu_model = sums.distance > 0.0 ? sums.mean_mu / sums.distance : settings.friction.mu0;
+  result.mu_loaded = sums.normal > 0.0 ? sums.loaded_mu / sums.normal : settings.friction.mu0;
+  if (sums.min_speed > 0.1 * settings.drag_speed && sums.normal > 0.0)
+    result.mu_k = sums.work / sums.normal;
   return result;
 }
 

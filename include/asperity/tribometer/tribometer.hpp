@@ -3,11 +3,12 @@
 // - Tilt table: the block rests on the plate, which tilts slowly about the axis perpendicular to
 //   the test direction s; mu_s(s) = tan of the tilt at which the block has slid more than 1 mm
 //   along the plate, or none when it topples (or reaches the largest tilt) first.
-// - Drag test: the block, its rotation locked (a guided pin), is pulled along s at constant speed
-//   by a stiff, critically damped spring; mu_k(s) = mean spring force along s over the mean
-//   normal force in steady sliding, or none when the block sticks in the measured window.
+// - Drag test: the block, guided so that it cannot turn on the plate (a tribometer's pin), is
+//   pulled along s at constant speed by a stiff, critically damped spring at the middle of its
+//   base; mu_k(s) = mean spring force along s over the mean normal force in steady sliding (over
+//   the distance slid), or none when the block sticks in the measured window.
 // - mu_model(s): the coefficient the friction provider gave the block's contacts against sliding
-//   along s, averaged over the drag test's window, each contact weighted by its normal impulse.
+//   along s, the mean over the contacts and over the distance slid in the drag test's window.
 //
 // Directions: s = cos(a) x + sin(a) y with a = 360 k / N degrees, k = 0..N-1: the direction the
 // block slides in, measured from the plate's +u toward +v (texture_rotation 0). The coefficient
@@ -71,11 +72,16 @@ struct TiltResult {
   bool toppled = false;        // on some track the block toppled
 };
 
-// One drag test (all its tracks pooled).
+// One drag test (all its tracks pooled). Means are over the distance slid in the windows.
 struct DragResult {
   std::optional<double> mu_k;  // none: no steady sliding in the window
-  double mu_model = 0.0;       // load-weighted mean coefficient of the block's contacts
-  double min_speed = 0.0;      // slowest speed along s in the window (m/s)
+  double mu_model = 0.0;       // mean coefficient of the block's contacts (linear in Eq. 7's gains)
+  // The same weighted by each contact's normal force: what the friction force adds up to if
+  // every contact slides at its bound. mu_k against it checks the solver; mu_model differs from
+  // it by how the solver shares the block's weight among the corners (a rigid block on four
+  // points can carry it in many ways), which leans a little toward the high-mu corners.
+  double mu_loaded = 0.0;
+  double min_speed = 0.0;  // slowest speed along s in the window (m/s)
 };
 
 struct TribometerDirection {
