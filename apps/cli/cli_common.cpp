@@ -18,6 +18,7 @@ void registerAllCommands(CLI::App& app) {
   registerTextureCommand(app);
   registerConeCommand(app);
   registerTribometerCommand(app);
+  registerCalibrateCommand(app);
   registerRunCommand(app);
   registerSweepCommand(app);
   registerPatchCommand(app);

@@ -22,6 +22,7 @@ namespace asperity::cli {
 void registerTextureCommand(CLI::App& app);
 void registerConeCommand(CLI::App& app);
 void registerTribometerCommand(CLI::App& app);
+void registerCalibrateCommand(CLI::App& app);
 void registerRunCommand(CLI::App& app);
 void registerSweepCommand(CLI::App& app);
 void registerPatchCommand(CLI::App& app);

@@ -249,7 +249,7 @@ void drawCurve(cairo_t* cr, const PolarAxes& a, std::span<const double> angles,
 
 void drawLegendEntry(cairo_t* cr, double x, double y, const CurveStyle& style,
                      const std::string& label) {
-  // A short line (or a filled box for a filled curve) in the curve's style, then the label.
+  // A short line (or a filled box for a filled curve) in the curve's style.
   if (style.fill_alpha > 0.0) {
     setColour(cr, style.colour, style.fill_alpha);
     cairo_rectangle(cr, x, y - 11.0, 28.0, 14.0);
@@ -264,6 +264,12 @@ void drawLegendEntry(cairo_t* cr, double x, double y, const CurveStyle& style,
   cairo_set_line_width(cr, style.width);
   cairo_stroke(cr);
   cairo_set_dash(cr, nullptr, 0, 0.0);
+  // A dot for curves drawn with dots (not for the cone's filled polygon, as before).
+  if (style.marker > 0.0 && style.fill_alpha <= 0.0) {
+    cairo_new_sub_path(cr);
+    cairo_arc(cr, x + 14.0, y - 5.0, style.marker, 0.0, 2.0 * kPi);
+    cairo_fill(cr);
+  }
   cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
   text(cr, label, x + 38.0, y, 13.0, Align::Left);
 }

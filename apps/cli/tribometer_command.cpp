@@ -12,39 +12,18 @@
 #include "asperity/tribometer/tribometer.hpp"
 #include "cli_common.hpp"
 #include "polar_figure.hpp"
+#include "tribometer_options.hpp"
 
 namespace asperity::cli {
 namespace {
 
 struct TribometerOptions {
-  std::string b_path;  // the plate (B); empty with --scene
-  std::string a_path;  // the block (A); empty: flat
-  std::string scene;
-  std::vector<std::string> bodies;  // block, plate
-  double k_a = 1.0, k_b = 1.0, mu0 = 0.0;
-  double texture_size = 0.256;
-  bool directx = false;
+  SurfaceOptions surfaces;
   std::vector<std::string> tests{"tilt", "drag"};
   TribometerSettings settings;
   bool json = false;
   std::string svg, png;
 };
-
-// What the options name: two textures, or two bodies of a scene (whose friction settings apply
-// unless --mu0 and the gains are given).
-TribometerSource sourceFor(const TribometerOptions& opt, const CLI::App& sub) {
-  TribometerSource source;
-  source.plate = opt.b_path;
-  source.block = opt.a_path;
-  source.scene = opt.scene;
-  if (opt.bodies.size() == 2) source.block_body = opt.bodies[0], source.plate_body = opt.bodies[1];
-  if (sub.count("--k-a")) source.k_a = opt.k_a;
-  if (sub.count("--k-b")) source.k_b = opt.k_b;
-  if (sub.count("--mu0")) source.mu0 = opt.mu0;
-  source.texture_size = opt.texture_size;
-  source.directx = opt.directx;
-  return source;
-}
 
 // A coefficient as JSON: the number, or null where the test gave none.
 nlohmann::ordered_json orNull(const std::optional<double>& x) {
@@ -99,8 +78,8 @@ void writeFigure(const TribometerOptions& opt, const TribometerSurfaces& surface
   PolarFigure f;
   f.plate = surfaces.plate.normal_map.get();
   f.block = surfaces.block.normal_map.get();
-  f.plate_name = opt.scene.empty() ? opt.b_path : opt.bodies[1];
-  f.block_name = opt.scene.empty() ? opt.a_path : opt.bodies[0];
+  f.plate_name = plateName(opt.surfaces);
+  f.block_name = blockName(opt.surfaces);
   f.title = "Tribometer: block A = " + (f.block_name.empty() ? "flat" : f.block_name) +
             " on plate B = " + f.plate_name;
   f.subtitle = subtitle;
@@ -130,7 +109,7 @@ void runTribometerCommand(const TribometerOptions& opt, const CLI::App& sub) {
   Diagnostics diagnostics;
   diagnostics.setSink(printWarning);
   const TribometerSurfaces surfaces =
-      resolveTribometerSource(sourceFor(opt, sub), settings, diagnostics);
+      resolveTribometerSource(sourceFor(opt.surfaces, sub), settings, diagnostics);
   settings.tilt = std::find(opt.tests.begin(), opt.tests.end(), "tilt") != opt.tests.end();
   settings.drag = std::find(opt.tests.begin(), opt.tests.end(), "drag") != opt.tests.end();
   const TribometerResult result = runTribometer(surfaces, settings);
@@ -147,65 +126,16 @@ void runTribometerCommand(const TribometerOptions& opt, const CLI::App& sub) {
   if (!opt.svg.empty() || !opt.png.empty()) writeFigure(opt, surfaces, subtitle, result);
 }
 
-// Options shared with `asperity cone`: the textures and the gains of Eq. 7.
-void addSurfaceOptions(CLI::App* sub, TribometerOptions& opt) {
-  sub->add_option("B", opt.b_path, "Plate's normal map (PNG, or gen:NAME:SEED[:P=V,...])");
-  sub->add_option("--a", opt.a_path, "Block's normal map (PNG or gen:...); default flat");
-  sub->add_option("--scene", opt.scene, "Scene whose two bodies are tested (with --bodies)");
-  sub->add_option("--bodies", opt.bodies, "A,B: the block's and the plate's body names")
-      ->delimiter(',')
-      ->expected(2);
-  sub->add_flag("--directx", opt.directx, "Read green as -bitangent (DirectX convention)");
-  sub->add_option("--k-a", opt.k_a, "Gain k_A of the block")
-      ->check(numberInRange(0.0, 1000.0))
-      ->capture_default_str();
-  sub->add_option("--k-b", opt.k_b, "Gain k_B of the plate")
-      ->check(numberInRange(0.0, 1000.0))
-      ->capture_default_str();
-  sub->add_option("--mu0", opt.mu0, "Nominal coefficient mu0")
-      ->check(numberInRange(0.0, 1000.0))
-      ->capture_default_str();
-  sub->add_option("--mu-max", opt.settings.friction.mu_max, "Clamp of the ploughing term")
-      ->check(numberInRange(1e-3, 1000.0))
-      ->capture_default_str();
-  sub->add_option("--texture-size", opt.texture_size, "Metres one texture repeat covers")
-      ->check(numberInRange(1e-4, 100.0))
-      ->capture_default_str();
-}
-
-// The rig and the runs: block, load, patch, directions, tests, tracks, threads.
-void addRigOptions(CLI::App* sub, TribometerOptions& opt) {
-  TribometerSettings& s = opt.settings;
-  sub->add_option("--directions", s.directions, "Number of test directions N")
+// What is tested beyond the rig: how many directions, which tests, the ploughing clamp.
+void addTestOptions(CLI::App* sub, TribometerOptions& opt) {
+  sub->add_option("--directions", opt.settings.directions, "Number of test directions N")
       ->check(CLI::Range(1, 360))
-      ->capture_default_str();
-  sub->add_option("--block-size", s.block_size, "Side of the block's square base (m)")
-      ->check(numberInRange(1e-3, 10.0))
-      ->capture_default_str();
-  sub->add_option("--block-height", s.block_height, "Height of the block (m)")
-      ->check(numberInRange(1e-3, 10.0))
-      ->capture_default_str();
-  sub->add_option("--load", s.load, "Normal load: the block's weight (N)")
-      ->check(numberInRange(1e-3, 1e6))
-      ->capture_default_str();
-  sub->add_option("--patch-width", s.friction.patch_width, "Patch width w (m)")
-      ->check(numberInRange(1e-5, 10.0))
-      ->capture_default_str();
-  sub->add_option("--patch-res", s.friction.patch_resolution, "Patch resolution R (pixels)")
-      ->check(CLI::Range(1, 1024))
-      ->capture_default_str();
-  sub->add_option("--sampler", s.sampler, "Friction provider: cpu, cone or constant")
-      ->check(CLI::IsMember({"cpu", "cone", "constant"}))
       ->capture_default_str();
   sub->add_option("--tests", opt.tests, "Which tests: tilt, drag (comma separated)")
       ->delimiter(',')
       ->check(CLI::IsMember({"tilt", "drag"}));
-  sub->add_option("--tracks", s.tracks, "Runs per test and direction, side by side")
-      ->check(CLI::Range(1, 64))
-      ->capture_default_str();
-  s.threads = 0;
-  sub->add_option("--threads", s.threads, "Threads (0 = every core); same numbers on any")
-      ->check(CLI::Range(0, 1024))
+  sub->add_option("--mu-max", opt.settings.friction.mu_max, "Clamp of the ploughing term")
+      ->check(numberInRange(1e-3, 1000.0))
       ->capture_default_str();
 }
 
@@ -215,8 +145,9 @@ void registerTribometerCommand(CLI::App& app) {
   auto opt = std::make_shared<TribometerOptions>();
   CLI::App* sub = app.add_subcommand(
       "tribometer", "Tilt table and drag test of a block on a plate in N directions (SPEC 12)");
-  addSurfaceOptions(sub, *opt);
-  addRigOptions(sub, *opt);
+  addSurfaceOptions(sub, opt->surfaces, false);
+  addRigOptions(sub, opt->settings);
+  addTestOptions(sub, *opt);
   sub->add_flag("--json", opt->json, "Print JSON instead of a table");
   sub->add_option("--svg", opt->svg, "Write the figure as SVG");
   sub->add_option("--png", opt->png, "Write the figure as PNG");

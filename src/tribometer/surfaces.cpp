@@ -121,6 +121,7 @@ TribometerSurfaces resolveTribometerSource(const TribometerSource& source,
     s.block.gain = source.k_a.value_or(s.block.gain);
     s.plate.gain = source.k_b.value_or(s.plate.gain);
     settings.friction.mu0 = source.mu0.value_or(settings.friction.mu0);
+    settings.sampler = source.sampler.value_or(settings.sampler);
     return s;
   }
   // Two textures (a flat block without one), with `asperity cone`'s defaults.
@@ -134,6 +135,7 @@ TribometerSurfaces resolveTribometerSource(const TribometerSource& source,
     s.block = tribometerSurface(source.block, s.block.gain, source.texture_size, diagnostics,
                                 source.directx);
   settings.friction.mu0 = source.mu0.value_or(0.0);
+  settings.sampler = source.sampler.value_or(settings.sampler);
   return s;
 }
 

@@ -86,4 +86,35 @@ struct CalibrationResult {
 CalibrationResult fitCalibration(const Measurements& data, const ModelTerms& terms,
                                  const CalibrationSpec& spec);
 
+// The free parameters: those `fit` names ("k_a", "k_b", "mu0"), or when it is empty every one
+// that `source` does not give; the fixed ones at the values the source gives, else the scene's
+// (or `asperity cone`'s defaults), as resolved into `surfaces` and `settings`. Throws
+// asperity::Error for an unknown name, or one both named and given.
+CalibrationSpec calibrationSpec(const TribometerSource& source, const std::vector<std::string>& fit,
+                                const TribometerSurfaces& surfaces,
+                                const TribometerSettings& settings);
+
+// A whole calibration, as `asperity calibrate` and Python run it.
+struct CalibrationRun {
+  Measurements data;
+  TribometerSurfaces surfaces;  // with the fitted gains
+  TribometerSettings settings;  // with the fitted mu0
+  ModelTerms terms;
+  CalibrationSpec spec;
+  CalibrationResult result;
+};
+// Reads `data_file`, resolves the source (tribometer.hpp), computes the model's terms at the
+// rows' angles and fits. `settings` gives the rig, patch and threads (the scene's friction
+// replaces it when the source names a scene). Throws asperity::Error as the steps do.
+CalibrationRun calibrate(const std::string& data_file, const TribometerSource& source,
+                         const std::vector<std::string>& fit, ModelKind model,
+                         TribometerSettings settings, Diagnostics& diagnostics);
+
+// Writes a scene with the fitted values: the source's scene with mu0 and the two bodies' gains
+// (every shape of each) replaced where fitted, or, for textures, a scene of the plate and the
+// block at rest on it with the calibrated surfaces and friction settings. Throws asperity::Error
+// naming the path when it cannot be written.
+void writeCalibratedScene(const CalibrationRun& calibration, const TribometerSource& source,
+                          const std::string& path);
+
 }  // namespace asperity

@@ -138,10 +138,11 @@ struct TribometerSource {
   std::optional<double> k_a, k_b, mu0;
   double texture_size = 0.256;  // metres per repeat of a texture named by text
   bool directx = false;         // PNG files' green is -bitangent
+  std::optional<std::string> sampler;  // given: replaces the scene's (or the settings')
 };
 
-// The surfaces `source` names, resolved; mu0 (and with a scene, its friction settings and
-// sampler) go into `settings`. Throws asperity::Error for both or neither of a plate texture and
+// The surfaces `source` names, resolved; mu0 and the sampler (and with a scene, its friction
+// settings) go into `settings`. Throws asperity::Error for both or neither of a plate texture and
 // a scene, a missing body name, and whatever resolving the textures or the scene throws.
 TribometerSurfaces resolveTribometerSource(const TribometerSource& source,
                                            TribometerSettings& settings, Diagnostics& diagnostics);
