@@ -13,6 +13,7 @@ from ._asperity import (  # noqa: F401  (re-exported)
     Scene,
     World,
     _Sweep,
+    calibrate,
     cone,
     generate_texture,
     load_normal_map,
@@ -20,8 +21,8 @@ from ._asperity import (  # noqa: F401  (re-exported)
     tribometer,
 )
 
-__all__ = ["Scene", "World", "cone", "generate_texture", "load_normal_map", "load_scene",
-           "sweep", "tribometer"]
+__all__ = ["Scene", "World", "calibrate", "cone", "generate_texture", "load_normal_map",
+           "load_scene", "sweep", "tribometer"]
 
 
 def _scene_source(scene):

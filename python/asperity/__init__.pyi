@@ -74,6 +74,14 @@ def tribometer(b: Union[PathLike, str, None] = None, a: Union[PathLike, str, Non
                tests: Sequence[str] = ("tilt", "drag"), tracks: int = 4, threads: int = 0,
                sampler: str | None = None) -> dict[str, npt.NDArray[Any]]: ...
 
+def calibrate(data: PathLike, b: Union[PathLike, str, None] = None,
+              a: Union[PathLike, str, None] = None, *, scene: PathLike | None = None,
+              bodies: Sequence[str] = (), k_a: float | None = None, k_b: float | None = None,
+              mu0: float | None = None, fit: Sequence[str] = (), model: str = "sampler",
+              texture_size: float = 0.256, block_size: float = 0.1, block_height: float = 0.025,
+              load: float = 10.0, tracks: int = 4, threads: int = 0, sampler: str | None = None,
+              write: PathLike | None = None) -> dict[str, Any]: ...
+
 Measure = Union[str, Callable[[dict[str, Any]], Union[float, Mapping[str, float]]]]
 
 def sweep(scene: Union[PathLike, Mapping[str, Any], Scene],
