@@ -1,5 +1,5 @@
 // The drag test against physics (SPEC 12): the solver delivers the coefficients the sampler gave
-// (mu_k = mu_model in every direction, and their load-weighted mean within 0.5 %), Amontons' laws
+// (mu_k = mu_model in every direction, and their load-weighted mean within 1 %), Amontons' laws
 // (mu_k independent of load and apparent area), Bowden and Tabor's cone through the `cones`
 // texture, a symmetric sawtooth the same in both senses, and a block that cannot slide reported as
 // such.
@@ -19,7 +19,7 @@ using test::dragOnly;
 using test::near;
 using test::tribometerPair;
 
-// In each of 16 directions: mu_k = mu_model within 5 %, and within 0.5 % of the contacts'
+// In each of 16 directions: mu_k = mu_model within 5 %, and within 1 % of the contacts'
 // coefficients weighted by their loads, what the friction adds up to if the solver holds every
 // contact at its bound (0.002 absolute where they are near 0).
 void expectKineticEqualsModel(const TribometerSurfaces& surfaces, double mu0) {
@@ -28,7 +28,7 @@ void expectKineticEqualsModel(const TribometerSurfaces& surfaces, double mu0) {
     const DragResult d = runDragTest(surfaces, settings, 22.5 * k);
     ASSERT_TRUE(d.mu_k.has_value()) << "no steady sliding at " << 22.5 * k << " deg";
     EXPECT_TRUE(near(*d.mu_k, d.mu_model, 0.05, 0.002)) << 22.5 * k << " deg";
-    EXPECT_TRUE(near(*d.mu_k, d.mu_loaded, 0.005, 0.002)) << 22.5 * k << " deg";
+    EXPECT_TRUE(near(*d.mu_k, d.mu_loaded, 0.01, 0.002)) << 22.5 * k << " deg";
   }
 }
 
