@@ -96,9 +96,8 @@ py::dict calibrationDict(const CalibrationRun& c) {
   return d;
 }
 
-}  // namespace
-
-void bindTribometer(py::module_& m) {
+// asperity.tribometer.
+void defineTribometer(py::module_& m) {
   m.def(
       "tribometer",
       [](const py::handle& b, const py::handle& a, const py::handle& scene,
@@ -134,6 +133,10 @@ void bindTribometer(py::module_& m) {
       "two bodies (block, plate) of a scene; the tilt table and the drag test in `directions` "
       "directions. Returns {'angle_deg', 'mu_s', 'mu_k', 'mu_model': (N,) float64 (NaN where a "
       "test gave none), 'toppled': (N,) bool}; the same numbers on any thread count.");
+}
+
+// asperity.calibrate.
+void defineCalibrate(py::module_& m) {
   m.def(
       "calibrate",
       [](const py::handle& data, const py::handle& b, const py::handle& a, const py::handle& scene,
@@ -174,6 +177,13 @@ void bindTribometer(py::module_& m) {
       "fit names the free ones. Returns the fitted keys and 'rms_residual' (the CLI's JSON) and "
       "'angle_deg', 'measured', 'model', 'residual' per row as arrays; write=PATH also writes a "
       "scene with the fitted values.");
+}
+
+}  // namespace
+
+void bindTribometer(py::module_& m) {
+  defineTribometer(m);
+  defineCalibrate(m);
 }
 
 }  // namespace asperity::python
