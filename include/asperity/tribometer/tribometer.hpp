@@ -136,8 +136,8 @@ struct TribometerSource {
   std::string block_body, plate_body;
   // Given: override the scene's (or the defaults k_A = k_B = 1, mu0 = 0 of `asperity cone`).
   std::optional<double> k_a, k_b, mu0;
-  double texture_size = 0.256;  // metres per repeat of a texture named by text
-  bool directx = false;         // PNG files' green is -bitangent
+  double texture_size = 0.256;         // metres per repeat of a texture named by text
+  bool directx = false;                // PNG files' green is -bitangent
   std::optional<std::string> sampler;  // given: replaces the scene's (or the settings')
 };
 
