@@ -17,6 +17,8 @@ namespace asperity::cli {
 void registerAllCommands(CLI::App& app) {
   registerTextureCommand(app);
   registerConeCommand(app);
+  registerTribometerCommand(app);
+  registerCalibrateCommand(app);
   registerRunCommand(app);
   registerSweepCommand(app);
   registerPatchCommand(app);

@@ -21,6 +21,8 @@ namespace asperity::cli {
 // Subcommands (apps/cli/<name>_command.cpp).
 void registerTextureCommand(CLI::App& app);
 void registerConeCommand(CLI::App& app);
+void registerTribometerCommand(CLI::App& app);
+void registerCalibrateCommand(CLI::App& app);
 void registerRunCommand(CLI::App& app);
 void registerSweepCommand(CLI::App& app);
 void registerPatchCommand(CLI::App& app);

@@ -45,3 +45,6 @@
 #include "asperity/world/run_loop.hpp"
 #include "asperity/world/state_check.hpp"
 #include "asperity/world/world.hpp"
+
+// Measuring friction: the virtual tribometer.
+#include "asperity/tribometer/tribometer.hpp"

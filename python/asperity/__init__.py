@@ -13,14 +13,16 @@ from ._asperity import (  # noqa: F401  (re-exported)
     Scene,
     World,
     _Sweep,
+    calibrate,
     cone,
     generate_texture,
     load_normal_map,
     load_scene,
+    tribometer,
 )
 
-__all__ = ["Scene", "World", "cone", "generate_texture", "load_normal_map", "load_scene",
-           "sweep"]
+__all__ = ["Scene", "World", "calibrate", "cone", "generate_texture", "load_normal_map",
+           "load_scene", "sweep", "tribometer"]
 
 
 def _scene_source(scene):

@@ -66,6 +66,22 @@ def cone(b: Union[PathLike, npt.ArrayLike], a: Union[PathLike, npt.ArrayLike, No
          directions: int = 16, k_a: float = 1.0, k_b: float = 1.0, mu0: float = 0.0,
          mu_max: float = 4.0) -> dict[str, Any]: ...
 
+def tribometer(b: Union[PathLike, str, None] = None, a: Union[PathLike, str, None] = None, *,
+               scene: PathLike | None = None, bodies: Sequence[str] = (), directions: int = 16,
+               k_a: float | None = None, k_b: float | None = None, mu0: float | None = None,
+               texture_size: float = 0.256, block_size: float = 0.1,
+               block_height: float = 0.025, load: float = 10.0,
+               tests: Sequence[str] = ("tilt", "drag"), tracks: int = 4, threads: int = 0,
+               sampler: str | None = None) -> dict[str, npt.NDArray[Any]]: ...
+
+def calibrate(data: PathLike, b: Union[PathLike, str, None] = None,
+              a: Union[PathLike, str, None] = None, *, scene: PathLike | None = None,
+              bodies: Sequence[str] = (), k_a: float | None = None, k_b: float | None = None,
+              mu0: float | None = None, fit: Sequence[str] = (), model: str = "sampler",
+              texture_size: float = 0.256, block_size: float = 0.1, block_height: float = 0.025,
+              load: float = 10.0, tracks: int = 4, threads: int = 0, sampler: str | None = None,
+              write: PathLike | None = None) -> dict[str, Any]: ...
+
 Measure = Union[str, Callable[[dict[str, Any]], Union[float, Mapping[str, float]]]]
 
 def sweep(scene: Union[PathLike, Mapping[str, Any], Scene],

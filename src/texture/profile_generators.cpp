@@ -1,4 +1,5 @@
-// Profile generators: the sawtooth of Figs. 8 and 12 and the screw thread of Fig. 13.
+// Profile generators: the sawtooth of Figs. 8 and 12, the screw thread of Fig. 13, and a field
+// of identical cones (Bowden and Tabor's ploughing asperity, SPEC 12).
 //
 // Direction convention (SPEC 1): a facet whose normal tilts toward +a resists a body sliding
 // over it toward -a. The sawtooth's ramps rise toward +axis, so ramp normals tilt toward -axis
@@ -68,6 +69,29 @@ NormalMap makeThread(const GeneratorContext& ctx) {
   return profileMap(profile, ctx.size(), ctx.axisRadians("axis"), shear, 0.0);
 }
 
+// cones: identical cones on a square grid of `period` texels, base radius base * period, flanks
+// tilted flank_angle from the plane (height tan(alpha) (r0 - r)); normals tilt outward, away from
+// the apex. Outside the cones (and at an apex) the map is flat. The model's value for it is
+// mu_d = base^2 (2/pi) tan(alpha) in every direction (docs/textures.md).
+NormalMap makeCones(const GeneratorContext& ctx) {
+  const double period = ctx.number("period");
+  const double radius = ctx.number("base") * period;
+  const double slope = std::tan(radians(ctx.number("flank_angle")));
+  // Offset of a texel centre from the nearest apex, at ((m + 1/2) period, (n + 1/2) period).
+  const auto offset = [period](int index) { return std::fmod(index + 0.5, period) - 0.5 * period; };
+  NormalMap map(ctx.size(), ctx.size());
+  for (int j = 0; j < ctx.size(); ++j) {
+    for (int i = 0; i < ctx.size(); ++i) {
+      const double dx = offset(i), dy = offset(j);
+      const double r = std::hypot(dx, dy);
+      if (r >= radius || r < 1e-9) continue;  // flat (NormalMap's default texel)
+      const Vec3f n(static_cast<float>(slope * dx / r), static_cast<float>(slope * dy / r), 1.0f);
+      map.at(i, j) = n.normalized();
+    }
+  }
+  return map;
+}
+
 }  // namespace
 
 std::vector<GeneratorEntry> profileGenerators() {
@@ -100,6 +124,17 @@ std::vector<GeneratorEntry> profileGenerators() {
                      "helix starts: the profile advances starts * pitch per map width across "
                      "the axis (0 = rings; whole numbers tile seamlessly)")}},
        makeThread});
+  entries.push_back(
+      {{"cones",
+        "identical conical asperities on a square grid (Bowden and Tabor's ploughing cone): "
+        "model mu_d = base^2 (2/pi) tan(flank_angle) in every direction",
+        {numberParam("flank_angle", 20.0, 0.0, 89.0,
+                     "attack angle alpha: tilt of the cones' flanks from the plane (degrees)"),
+         numberParam("period", 16.0, 2.0, 8192.0, "spacing of the cones (texels)"),
+         numberParam("base", 0.5, 0.0, 0.5,
+                     "base radius as a fraction of the period (0.5: neighbours touch); the "
+                     "cones cover pi base^2 of the plane")}},
+       makeCones});
   return entries;
 }
 

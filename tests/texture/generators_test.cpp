@@ -18,7 +18,7 @@ using test::expectErrorContaining;
 using test::generate;
 
 // Generators whose output does not depend on the seed.
-const std::set<std::string> kDeterministic = {"sawtooth", "thread", "heightmap", "emboss"};
+const std::set<std::string> kDeterministic = {"sawtooth", "thread", "cones", "heightmap", "emboss"};
 
 // A small grayscale height map for the heightmap generator.
 std::string heightmapFile() {
@@ -54,9 +54,9 @@ TEST(Generators, CatalogHoldsEveryGeneratorOfSpec6WithDocumentedParameters) {
       }
     }
   }
-  for (const char* expected :
-       {"gaussian", "sawtooth", "roughness", "concrete", "cast_iron", "steel", "heightmap",
-        "emboss", "thread", "acrylic", "oak", "cut_pvc", "plaster", "stone", "metal", "plastic"}) {
+  for (const char* expected : {"gaussian", "sawtooth", "roughness", "concrete", "cast_iron",
+                               "steel", "heightmap", "emboss", "thread", "cones", "acrylic", "oak",
+                               "cut_pvc", "plaster", "stone", "metal", "plastic"}) {
     EXPECT_TRUE(names.count(expected)) << expected;
   }
 }

@@ -1,4 +1,4 @@
-// Sawtooth and thread: facet angles, area fractions and the facing directions documented in
+// Sawtooth, thread and cones: facet angles, area fractions and the facing directions documented in
 // docs/textures.md, checked against the friction oracle mu_d (SPEC 1, 2).
 #include <gtest/gtest.h>
 
@@ -110,6 +110,44 @@ TEST(ThreadGenerator, HelixLeansTheRidges) {
   }
   // Whole starts tile: column 0 continues column 63 shifted by one pitch over the width.
   EXPECT_TRUE(near(map.at(0, 10).y(), map.at(63, 2).y(), 0.0, 1e-6));
+}
+
+TEST(ConesGenerator, FlanksTiltAlphaOutwardAndCoverPiBaseSquared) {
+  // Large cones (radius 32 texels): every flank texel tilts alpha, away from its apex.
+  const NormalMap map = generate("cones", {{"flank_angle", "30"}, {"period", "64"}}, 256);
+  int flank = 0;
+  for (int j = 0; j < map.height(); ++j) {
+    for (int i = 0; i < map.width(); ++i) {
+      const Vec3f& m = map.at(i, j);
+      if (m.z() == 1.0f) continue;
+      ++flank;
+      EXPECT_TRUE(near(degrees(std::atan(test::tanTilt(m))), 30.0, 0.0, 1e-4));
+      // Outward: along the offset from the apex at (32, 32) + 64 (m, n) texels.
+      const double dx = std::fmod(i + 0.5, 64.0) - 32.0, dy = std::fmod(j + 0.5, 64.0) - 32.0;
+      EXPECT_GT(m.x() * dx + m.y() * dy, 0.0);
+    }
+  }
+  // base 0.5: the cones cover pi / 4 of the plane.
+  EXPECT_TRUE(near(flank / 65536.0, kPi / 4.0, 0.01));
+}
+
+TEST(ConesGenerator, ModelValueIsBaseSquaredTimesBowdenTabor) {
+  // mu_d = base^2 (2/pi) tan(alpha) in every direction (docs/textures.md), alpha 5 to 45.
+  for (double alpha : {5.0, 15.0, 30.0, 45.0}) {
+    for (double base : {0.5, 0.3}) {
+      const NormalMap map = generate("cones",
+                                     {{"flank_angle", std::to_string(alpha)},
+                                      {"period", "64"},
+                                      {"base", std::to_string(base)}},
+                                     256);
+      const double expected = base * base * 2.0 / kPi * std::tan(alpha * kPi / 180.0);
+      for (int k = 0; k < 16; ++k) {
+        const double a = 2.0 * kPi * k / 16.0;
+        EXPECT_TRUE(near(muAlong(map, std::cos(a), std::sin(a)), expected, 0.02))
+            << "alpha " << alpha << " base " << base << " direction " << k;
+      }
+    }
+  }
 }
 
 }  // namespace
