@@ -26,6 +26,7 @@ void bindScene(py::module_& m);
 void bindWorld(py::module_& m);
 void bindTexture(py::module_& m);
 void bindSweep(py::module_& m);
+void bindBatch(py::module_& m);
 void bindRender(py::module_& m);
 
 // Python object (dict, list, numbers, strings) to JSON and back.

@@ -59,5 +59,6 @@ PYBIND11_MODULE(_asperity, m) {
   bindWorld(m);
   bindTexture(m);
   bindSweep(m);
+  bindBatch(m);
   bindRender(m);
 }
