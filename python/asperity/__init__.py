@@ -218,3 +218,5 @@ def _number(x):
     fixed = np.format_float_positional(x, unique=True, trim="-")
     sci = np.format_float_scientific(x, unique=True, trim="-", exp_digits=2)
     return fixed if len(fixed) <= len(sci) else sci
+
+from . import envs  # noqa: E402,F401  (asperity.envs after the names it imports)
