@@ -35,6 +35,8 @@ LAYERS = [
     "scene",
     "engines",
     "sweep",
+    "batch",
+    "tribometer",
     "experiments",
     "render",
 ]

@@ -35,7 +35,8 @@
 #include "asperity/sampler/cpu_patch_sampler.hpp"
 #include "asperity/sampler/friction_provider.hpp"
 
-// The world, its step, its contacts and its profile; scenes and ensembles of runs.
+// The world, its step, its contacts and its profile; scenes, ensembles of runs and batches.
+#include "asperity/batch/batch.hpp"
 #include "asperity/collision/contact.hpp"
 #include "asperity/scene/friction_providers.hpp"
 #include "asperity/scene/scene.hpp"

@@ -1,7 +1,9 @@
 """Asperity: rigid bodies whose friction comes from the normal maps of their surfaces.
 
 The simulator is C++ (asperity._asperity); this package adds ensembles of runs
-(:func:`sweep`) on a pool of threads or a Dask cluster. docs/python.md describes the API.
+(:func:`sweep`) on a pool of threads or a Dask cluster, batches of worlds stepped together
+(:class:`Batch`) and environments for learning over them (:mod:`asperity.envs`).
+docs/python.md describes the API.
 """
 
 import json
@@ -12,6 +14,7 @@ import numpy as np
 from ._asperity import (  # noqa: F401  (re-exported)
     Scene,
     World,
+    _Batch,
     _Sweep,
     calibrate,
     cone,
@@ -21,7 +24,7 @@ from ._asperity import (  # noqa: F401  (re-exported)
     tribometer,
 )
 
-__all__ = ["Scene", "World", "calibrate", "cone", "generate_texture", "load_normal_map",
+__all__ = ["Batch", "Scene", "World", "calibrate", "cone", "generate_texture", "load_normal_map",
            "load_scene", "sweep", "tribometer"]
 
 
@@ -57,14 +60,52 @@ def _vary_pairs(vary):
     return pairs
 
 
+class Batch(_Batch):
+    """n worlds of one scene stepped together, each with its own values of `vary`.
+
+    scene: a path, a dict or an asperity.Scene. vary: {json_path: spec} as for
+    :func:`sweep`; world i takes the values sample i of a sweep with the same seed takes, and is
+    bit for bit a World of the scene with those values written in, given the same actions, on
+    any thread count. threads: the pool the worlds step on (0 = every core; each world steps on
+    one thread).
+
+    State: positions, orientations, linear_velocities, angular_velocities, read-only views
+    (n, B, 3) / (n, B, 4) of the batch's own buffers that every step and reset refresh (copy
+    them to keep a snapshot). Actions for the next step(k): set_force, set_torque,
+    set_velocity, set_angular_velocity (body name, (n, 3) array), set_joint_target (joint
+    name, (n,) array). reset(mask, state, samples) starts worlds again as new ones. values:
+    {path: (n,) array}; state_hashes(): (n,) strings as World.state_hash().
+    """
+
+    def __init__(self, scene, n, threads=0, vary=None, seed=0):
+        _check_type_int(n, "n")
+        threads = _check_int(threads, "threads", 0)
+        seed = _check_int(seed, "seed", 0)
+        text, scene_file = _scene_source(scene)
+        pairs = _vary_pairs(vary or {})
+        super().__init__(text, scene_file, pairs, int(n), seed, threads)
+
+    @property
+    def n(self):
+        """Number of worlds."""
+        return len(self)
+
+    def __repr__(self):
+        return "<asperity.Batch of %d worlds, %d bodies>" % (len(self), len(self.body_names))
+
+
+def _check_type_int(value, name):
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise TypeError("%s must be an integer, got %s" % (name, type(value).__name__))
+
+
 def _run_chunk(args, indices):
     """Runs samples `indices` of a sweep on a Dask worker, on a pool of its machine's cores."""
     return _Sweep(*args).run(list(indices), 0)
 
 
 def _check_int(value, name, low):
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
-        raise TypeError("%s must be an integer, got %s" % (name, type(value).__name__))
+    _check_type_int(value, name)
     if value < low:
         raise ValueError("--%s must be >= %d, got %d" % (name, low, value))
     return int(value)
@@ -201,3 +242,5 @@ def _number(x):
     fixed = np.format_float_positional(x, unique=True, trim="-")
     sci = np.format_float_scientific(x, unique=True, trim="-", exp_digits=2)
     return fixed if len(fixed) <= len(sci) else sci
+
+from . import envs  # noqa: E402,F401  (asperity.envs after the names it imports)

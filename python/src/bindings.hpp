@@ -27,6 +27,7 @@ void bindWorld(py::module_& m);
 void bindTexture(py::module_& m);
 void bindSweep(py::module_& m);
 void bindTribometer(py::module_& m);
+void bindBatch(py::module_& m);
 void bindRender(py::module_& m);
 
 // Python object (dict, list, numbers, strings) to JSON and back.

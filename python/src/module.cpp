@@ -60,5 +60,6 @@ PYBIND11_MODULE(_asperity, m) {
   bindTexture(m);
   bindSweep(m);
   bindTribometer(m);
+  bindBatch(m);
   bindRender(m);
 }

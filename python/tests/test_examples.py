@@ -1,4 +1,5 @@
-"""examples/python run end to end (small sizes): a plot, a fitted gain, a rendered PNG."""
+"""examples/python run end to end (small sizes): a plot, a fitted gain, a rendered PNG, a
+learnt pusher with its learning curves."""
 
 import os
 import re
@@ -45,3 +46,16 @@ def test_render_png_writes_a_frame_or_says_why(tmp_path):
         assert r.stderr.startswith("render: ") and "Traceback" not in r.stderr, r.stderr
         return
     assert (tmp_path / "f.png").stat().st_size > 100
+
+
+def test_learn_push_runs_the_learner_and_plots_its_curves(tmp_path):
+    out = run_example("learn_push.py", "--iterations", 2, "--population", 6, "--elites", 2,
+                      "--episodes", 1, "--validation", 2, "--held-out", 3, "--threads", 2,
+                      "--out", "curves.png", cwd=tmp_path)
+    assert len(re.findall(r"sawtooth iteration +\d+: validation success", out)) == 2
+    assert len(re.findall(r"constant iteration +\d+", out)) == 2
+    rows = re.findall(r"(sawtooth|constant) goals (ahead|behind) *: success +(\d+) %", out)
+    assert len(rows) == 4
+    # The steep faces hold the box whatever the policy.
+    assert dict(((t, d), int(s)) for t, d, s in rows)[("sawtooth", "behind")] == 0
+    assert (tmp_path / "curves.png").stat().st_size > 1000

@@ -92,19 +92,24 @@ Sweep::Sweep(SweepDesc desc) : desc_(std::move(desc)) {
   steps_ = stepsFor(desc_.seconds, scene.settings.dt, "seconds");
 }
 
+nlohmann::json Sweep::sceneJson(int64_t index) const {
+  // The scene with this sample's values written at every matching pointer.
+  const std::vector<double> drawn = values(index);
+  nlohmann::json json = *scene_;
+  for (size_t j = 0; j < pointers_.size(); ++j)
+    for (const std::string& p : pointers_[j]) json[nlohmann::json::json_pointer(p)] = drawn[j];
+  return json;
+}
+
 SampleResult Sweep::run(int64_t index) const {
   SampleResult r;
   r.index = index;
   r.values = values(index);
-  // The scene with this sample's values written at every matching pointer.
-  nlohmann::json json = *scene_;
-  for (size_t j = 0; j < pointers_.size(); ++j)
-    for (const std::string& p : pointers_[j]) json[nlohmann::json::json_pointer(p)] = r.values[j];
   std::unique_ptr<World> world;
   try {
     InstantiateOptions options;
     options.resources = resources_;
-    world = instantiate(parseScene(json, desc_.scene_file), options);
+    world = instantiate(parseScene(sceneJson(index), desc_.scene_file), options);
   } catch (const Error& e) {
     throw Error("sample " + std::to_string(index) + ": " + e.what());
   }

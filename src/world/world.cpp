@@ -5,6 +5,7 @@
 #include "asperity/world/world.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -188,6 +189,16 @@ double World::jointError(JointId id) const {
     return std::abs((pa - pb).norm() - distanceJointLength(j, time_));
   }
   return (pa - pb).norm();
+}
+
+void World::setJointRestLength(JointId id, double length) {
+  if (id >= joints_.size()) throw Error("joint id " + std::to_string(id) + " does not exist");
+  JointDesc& j = joints_[id];
+  if (j.type != JointType::Distance)
+    throw Error("joint '" + j.name + "': only distance joints have a rest length");
+  if (!std::isfinite(length) || length < 0.0)
+    throw Error("joint '" + j.name + "': rest length must be a finite number >= 0 (m)");
+  j.rest_length = length;
 }
 
 void World::forgetContactHistory() {

@@ -98,6 +98,38 @@ TEST(World, DistanceJointTakesInitialLengthAndFollowsItsCosine) {
   EXPECT_LT(worst, 1e-3);
 }
 
+TEST(World, ADistanceJointsRestLengthCanBeSet) {
+  WorldSettings s;
+  s.gravity = Vec3::Zero();
+  World world(s);
+  const BodyId a = world.createBody(boxDesc("a", Vec3::Constant(0.05), {}));
+  const BodyId b =
+      world.createBody(boxDesc("b", Vec3::Constant(0.05), {Vec3(0.3, 0, 0), Quat::Identity()}));
+  JointDesc j;
+  j.name = "tie";
+  j.type = JointType::Distance;
+  j.body_a = a;
+  j.body_b = b;
+  const JointId tie = world.createJoint(j);
+  j.name = "ball";  // between two other bodies, far away
+  j.type = JointType::Ball;
+  j.body_a =
+      world.createBody(boxDesc("c", Vec3::Constant(0.05), {Vec3(0, 1, 0), Quat::Identity()}));
+  j.body_b =
+      world.createBody(boxDesc("d", Vec3::Constant(0.05), {Vec3(0, 1, 0), Quat::Identity()}));
+  const JointId ball = world.createJoint(j);
+  // The joint pulls the bodies to the new length.
+  world.setJointRestLength(tie, 0.25);
+  for (int i = 0; i < 100; ++i) world.step();
+  EXPECT_NEAR((world.body(b).pose.position - world.body(a).pose.position).norm(), 0.25, 1e-3);
+  // Other joint types, unknown ids, bad lengths.
+  EXPECT_EQ(test::errorOf([&] { world.setJointRestLength(ball, 0.1); }),
+            "joint 'ball': only distance joints have a rest length");
+  EXPECT_EQ(test::errorOf([&] { world.setJointRestLength(7, 0.1); }), "joint id 7 does not exist");
+  EXPECT_EQ(test::errorOf([&] { world.setJointRestLength(tie, -1.0); }),
+            "joint 'tie': rest length must be a finite number >= 0 (m)");
+}
+
 TEST(World, HingeKeepsItsAxisAndFixedKeepsItsPose) {
   WorldSettings s;
   s.dt = 0.001;

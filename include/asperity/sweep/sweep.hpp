@@ -105,6 +105,9 @@ class Sweep {
   const std::vector<std::string>& bodyNames() const { return body_names_; }
   // The values sample `index` takes, one per variation (no world is built).
   std::vector<double> values(int64_t index) const;
+  // The scene's JSON with sample `index`'s values written at every pointer its variations
+  // match: what run() builds the sample's world from (asperity::Batch builds its worlds so too).
+  nlohmann::json sceneJson(int64_t index) const;
   // Builds the scene with sample `index`'s values, runs it for desc().seconds and records it.
   // Throws asperity::Error naming the sample when the varied scene is invalid.
   SampleResult run(int64_t index) const;

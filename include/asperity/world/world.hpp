@@ -170,6 +170,10 @@ class World {
   std::span<const LoadDesc> loads() const { return loads_; }
   // Position error of joint i (m): distance between the anchors, or from the target length.
   double jointError(JointId id) const;
+  // Sets distance joint `id`'s rest length (m): from the next step on it holds rest_length +
+  // amplitude cos(...) (JointDesc). Throws asperity::Error for an unknown id, another joint
+  // type, or a length that is not a finite number >= 0.
+  void setJointRestLength(JointId id, double length);
 
   const std::vector<Contact>& contacts() const { return contacts_; }
   const StepProfile& profile() const { return profile_; }
