@@ -2,7 +2,8 @@
 
 The simulator is C++ (asperity._asperity); this package adds ensembles of runs
 (:func:`sweep`) on a pool of threads or a Dask cluster, batches of worlds stepped together
-(:class:`Batch`) and environments for learning over them (:mod:`asperity.envs`).
+(:class:`Batch`, and open-loop :func:`rollout` of them on threads or Dask) and environments for
+learning over them (:mod:`asperity.envs`).
 docs/python.md describes the API.
 """
 
@@ -23,7 +24,7 @@ from ._asperity import (  # noqa: F401  (re-exported)
 )
 
 __all__ = ["Batch", "Scene", "World", "cone", "generate_texture", "load_normal_map",
-           "load_scene", "sweep"]
+           "load_scene", "rollout", "sweep"]
 
 
 def _scene_source(scene):
@@ -219,4 +220,7 @@ def _number(x):
     sci = np.format_float_scientific(x, unique=True, trim="-", exp_digits=2)
     return fixed if len(fixed) <= len(sci) else sci
 
+
+# The parts built on the names above.
 from . import envs  # noqa: E402,F401  (asperity.envs after the names it imports)
+from .rollout import rollout  # noqa: E402,F401
