@@ -167,14 +167,18 @@ def _split_measures(measure):
 
 def _run_on_client(client, args, samples):
     """Spreads the samples over the cluster's workers in chunks and joins them in order."""
-    workers = max(1, len(client.scheduler_info().get("workers", {})))
-    chunks = np.array_split(np.arange(samples), min(samples, 4 * workers))
-    futures = client.map(_run_chunk, [args] * len(chunks), [c.tolist() for c in chunks],
-                         pure=False)
+    chunks = _client_chunks(client, samples)
+    futures = client.map(_run_chunk, [args] * len(chunks), chunks, pure=False)
     parts = client.gather(futures)
     columns = {k: np.concatenate([p[0][k] for p in parts]) for k in parts[0][0]}
     state = {k: np.concatenate([p[1][k] for p in parts]) for k in parts[0][1]}
     return columns, state
+
+
+def _client_chunks(client, n):
+    """Indices 0..n-1 in consecutive chunks, about four per worker of the cluster."""
+    workers = max(1, len(client.scheduler_info().get("workers", {})))
+    return [c.tolist() for c in np.array_split(np.arange(n), min(n, 4 * workers))]
 
 
 def _apply_callables(columns, state, callables, body_names, paths):

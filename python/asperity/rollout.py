@@ -4,7 +4,7 @@ cluster in chunks of worlds, with the same numbers either way."""
 
 import numpy as np
 
-from . import _Batch, _check_int, _scene_source, _vary_pairs
+from . import _Batch, _check_int, _client_chunks, _scene_source, _vary_pairs
 
 # Action kinds: Batch's set_<kind> method, the width of one world's value (None: a number).
 ACTIONS = {"force": 3, "torque": 3, "velocity": 3, "angular_velocity": 3, "joint_target": None}
@@ -90,8 +90,7 @@ def _run_chunk(args, worlds, actions, threads):
 
 def _run_on_client(client, args, actions, n):
     """Chunks of worlds on the cluster's workers (about four per worker), joined in order."""
-    workers = max(1, len(client.scheduler_info().get("workers", {})))
-    chunks = [c.tolist() for c in np.array_split(np.arange(n), min(n, 4 * workers))]
+    chunks = _client_chunks(client, n)
     futures = client.map(_run_chunk, [args] * len(chunks), chunks,
                          [{k: a[c] for k, a in actions.items()} for c in chunks],
                          [0] * len(chunks), pure=False)
