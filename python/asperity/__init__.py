@@ -2,7 +2,8 @@
 
 The simulator is C++ (asperity._asperity); this package adds ensembles of runs
 (:func:`sweep`) on a pool of threads or a Dask cluster, batches of worlds stepped together
-(:class:`Batch`) and environments for learning over them (:mod:`asperity.envs`).
+(:class:`Batch`, and open-loop :func:`rollout` of them on threads or Dask) and environments for
+learning over them (:mod:`asperity.envs`).
 docs/python.md describes the API.
 """
 
@@ -25,7 +26,7 @@ from ._asperity import (  # noqa: F401  (re-exported)
 )
 
 __all__ = ["Batch", "Scene", "World", "calibrate", "cone", "generate_texture", "load_normal_map",
-           "load_scene", "sweep", "tribometer"]
+           "load_scene", "rollout", "sweep", "tribometer"]
 
 
 def _scene_source(scene):
@@ -177,14 +178,18 @@ def _split_measures(measure):
 
 def _run_on_client(client, args, samples):
     """Spreads the samples over the cluster's workers in chunks and joins them in order."""
-    workers = max(1, len(client.scheduler_info().get("workers", {})))
-    chunks = np.array_split(np.arange(samples), min(samples, 4 * workers))
-    futures = client.map(_run_chunk, [args] * len(chunks), [c.tolist() for c in chunks],
-                         pure=False)
+    chunks = _client_chunks(client, samples)
+    futures = client.map(_run_chunk, [args] * len(chunks), chunks, pure=False)
     parts = client.gather(futures)
     columns = {k: np.concatenate([p[0][k] for p in parts]) for k in parts[0][0]}
     state = {k: np.concatenate([p[1][k] for p in parts]) for k in parts[0][1]}
     return columns, state
+
+
+def _client_chunks(client, n):
+    """Indices 0..n-1 in consecutive chunks, about four per worker of the cluster."""
+    workers = max(1, len(client.scheduler_info().get("workers", {})))
+    return [c.tolist() for c in np.array_split(np.arange(n), min(n, 4 * workers))]
 
 
 def _apply_callables(columns, state, callables, body_names, paths):
@@ -243,4 +248,7 @@ def _number(x):
     sci = np.format_float_scientific(x, unique=True, trim="-", exp_digits=2)
     return fixed if len(fixed) <= len(sci) else sci
 
+
+# The parts built on the names above.
 from . import envs  # noqa: E402,F401  (asperity.envs after the names it imports)
+from .rollout import rollout  # noqa: E402,F401

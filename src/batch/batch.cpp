@@ -62,7 +62,7 @@ Batch::Batch(BatchDesc desc)
   std::vector<size_t> all(n);
   std::iota(all.begin(), all.end(), size_t{0});
   const std::string error = eachWorld(*pool_, all, [&](size_t i) {
-    rebuild(i, static_cast<int64_t>(i));
+    rebuild(i, static_cast<int64_t>(i), nullptr);
     gather(i);
   });
   if (!error.empty()) throw Error(error);
@@ -71,13 +71,20 @@ Batch::Batch(BatchDesc desc)
 
 Batch::~Batch() = default;
 
-void Batch::rebuild(size_t i, int64_t sample) {
+void Batch::rebuild(size_t i, int64_t sample, const BatchState* given) {
   SceneDesc scene = parseScene(sweep_.sceneJson(sample), desc_.scene_file);
   // One thread per world: the pool runs the worlds side by side.
   scene.settings.threads = 1;
   InstantiateOptions options;
   options.resources = resources_;
   worlds_[i] = instantiate(scene, options);
+  // The given parts of the state, with no history behind them.
+  if (given) {
+    scatter(i, *given);
+    worlds_[i]->forgetContactHistory();
+  }
+  // Collision objects now rather than in the first step (World::prepare; no bits change).
+  worlds_[i]->prepare();
   // The sample and its drawn values, kept beside the world they built.
   samples_[i] = sample;
   const std::vector<double> drawn = sweep_.values(sample);
@@ -103,13 +110,9 @@ void Batch::reset(std::span<const uint8_t> mask, const BatchState* state,
       throw Error("reset: samples[" + std::to_string(i) + "] must be >= 0, got " +
                   std::to_string(samples[i]));
   if (state) checkGiven(*state, chosen);
-  // Each chosen world anew, then the given parts of its state with no history behind them.
+  // Each chosen world anew, with the given parts of its state.
   const std::string error = eachWorld(*pool_, chosen, [&](size_t i) {
-    rebuild(i, samples.empty() ? samples_[i] : samples[i]);
-    if (state) {
-      scatter(i, *state);
-      worlds_[i]->forgetContactHistory();
-    }
+    rebuild(i, samples.empty() ? samples_[i] : samples[i], state);
     gather(i);
   });
   if (!error.empty()) throw Error(error);

@@ -92,7 +92,8 @@ class Batch {
   void step(int64_t steps = 1);
 
   // Puts the worlds whose mask entry is non-zero (all when `mask` is empty) back to the start:
-  // each is instantiated anew, so it evolves exactly as a new world, contact history included.
+  // each is instantiated anew, so it evolves exactly as a new world, contact history included
+  // (World::prepare builds its collision objects here rather than in its first step).
   // With `samples` (n entries) world i becomes sample samples[i] with its values. With `state`,
   // each of its arrays that is not empty (full (n, B, W) size) then replaces that part of the
   // initial state (quaternions normalised), and the contact history is forgotten
@@ -112,8 +113,9 @@ class Batch {
     uint32_t target;
     std::vector<double> values;
   };
-  // World i anew as sample `sample`, with its drawn values.
-  void rebuild(size_t i, int64_t sample);
+  // World i anew as sample `sample`, with its drawn values and the non-empty parts of
+  // `given` (or none), prepared for its first step.
+  void rebuild(size_t i, int64_t sample, const BatchState* given);
   // The actions, applied to world i before one of its steps.
   void applyActions(size_t i);
   // Copies world i's bodies into its rows of state_.
