@@ -12,15 +12,7 @@ namespace {
 using plot::Align;
 using plot::text;
 
-// Layout of the figure (pixels): thumbnails at the left, polar plot, legend at the right.
-constexpr double kThumb = 140.0;
-constexpr double kThumbX = 24.0;
-constexpr double kThumbBY = 92.0;
-constexpr double kThumbAY = 268.0;
-constexpr double kPolarCx = 382.0;
-constexpr double kPolarCy = 240.0;
-constexpr double kPolarRadius = 140.0;  // pixels for the outermost tick
-constexpr double kLegendX = 590.0;
+using namespace plot;  // the shared layout (polar_plot.hpp)
 
 // The polygon of mu_d (translucent fill, dots at the samples) and the box (dashed).
 constexpr plot::CurveStyle kPolygonStyle{plot::kBlue, 0.22, 2.0, false, 3.5, true};

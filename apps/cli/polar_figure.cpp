@@ -9,15 +9,11 @@ namespace {
 using plot::Align;
 using plot::text;
 
-// Layout (pixels), as the cone figure's: thumbnails, polar plot, legend.
+using namespace plot;  // the shared layout (polar_plot.hpp)
+
+// The figure's size (pixels), as the cone figure's.
 constexpr int kWidth = 900;
 constexpr int kHeight = 420;
-constexpr double kThumb = 140.0;
-constexpr double kThumbX = 24.0;
-constexpr double kPolarCx = 382.0;
-constexpr double kPolarCy = 240.0;
-constexpr double kPolarRadius = 140.0;
-constexpr double kLegendX = 590.0;
 
 // The largest coefficient shown, so that the plot fits every curve.
 double extent(const PolarFigure& f) {
@@ -51,8 +47,8 @@ void drawFigure(cairo_t* cr, const PolarFigure& f) {
   const auto label = [](const char* side, const std::string& name) {
     return std::string(side) + (name.empty() ? "flat" : plot::shortName(name, 18));
   };
-  plot::drawThumbnail(cr, f.plate, label("B: ", f.plate_name), kThumbX, 92.0, kThumb);
-  plot::drawThumbnail(cr, f.block, label("A: ", f.block_name), kThumbX, 268.0, kThumb);
+  plot::drawThumbnail(cr, f.plate, label("B: ", f.plate_name), kThumbX, kThumbBY, kThumb);
+  plot::drawThumbnail(cr, f.block, label("A: ", f.block_name), kThumbX, kThumbAY, kThumb);
   const plot::PolarAxes axes = plot::polarAxes(kPolarCx, kPolarCy, kPolarRadius, extent(f));
   plot::drawAxes(cr, axes, "u", "v");
   for (const PolarCurve& c : f.curves) {

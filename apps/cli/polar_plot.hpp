@@ -13,6 +13,17 @@
 
 namespace asperity::cli::plot {
 
+// The layout every polar figure shares (pixels): thumbnails at the left, the polar plot, the
+// legend at the right (asperity cone's, the tribometer's and the calibration's figures).
+constexpr double kThumb = 140.0;
+constexpr double kThumbX = 24.0;
+constexpr double kThumbBY = 92.0;   // surface B's thumbnail
+constexpr double kThumbAY = 268.0;  // surface A's thumbnail
+constexpr double kPolarCx = 382.0;
+constexpr double kPolarCy = 240.0;
+constexpr double kPolarRadius = 140.0;  // the outermost tick
+constexpr double kLegendX = 590.0;
+
 enum class Align { Left, Center, Right };
 
 struct Colour {

@@ -23,6 +23,15 @@ inline std::vector<std::pair<std::string, SceneDesc>> agreementSetups() {
           {"materials", engine_setups::boxesOnMaterials()}};
 }
 
+// Boxes launched over a slab whose normal map is flat (Ra 0), gain 2, one of them diagonally.
+inline SceneDesc flatSlab() {
+  SceneDesc scene = engine_setups::gaussianLaunch();
+  Surface& slab = scene.bodies[0].shapes[0].surface;
+  slab.source.generator = {"roughness", {{"ra_mm", "0"}}, 64, 1};
+  scene.bodies[1].linear_velocity = Vec3(1.0, 0.6, 0.0);
+  return scene;
+}
+
 // Every box of the engine's run slides within `tolerance` (relative) of Asperity's World.
 inline void expectAgreement(const std::string& setup, const engine_setups::Distances& engine,
                             const engine_setups::Distances& asperity, double tolerance) {

@@ -14,14 +14,7 @@ namespace {
 
 using test::errorOf;
 
-// Boxes launched over a slab whose normal map is flat (Ra 0), gain 2, one of them diagonally.
-SceneDesc flatSlab() {
-  SceneDesc scene = engine_setups::gaussianLaunch();
-  Surface& slab = scene.bodies[0].shapes[0].surface;
-  slab.source.generator = {"roughness", {{"ra_mm", "0"}}, 64, 1};
-  scene.bodies[1].linear_velocity = Vec3(1.0, 0.6, 0.0);
-  return scene;
-}
+using test::flatSlab;
 
 TEST(OdeFriction, FlatTextureLeavesOdesRunUnchanged) {
   // Boxes that cannot turn: every patch sees flat facets square to the normal, so nothing
