@@ -18,8 +18,13 @@ struct TexelBracket {
 };
 
 // floor() as an int without a libm call (baseline x86-64 has no rounding instruction), for
-// |x| < 2^24; the correction is done on ints, so that loops using it stay branch-free.
+// |x| < 2^24; the correction is done on ints, so that loops using it stay branch-free. Beyond
+// 2^30 the value is clamped, keeping the conversion defined: a coordinate that large (a
+// degenerate primitive's extrapolated uv) has lost its fraction already, and nothing smaller
+// changes.
 inline int floorInt(float x) {
+  constexpr float kLimit = 1073741824.0f;  // 2^30
+  x = std::min(std::max(x, -kLimit), kLimit);
   const int t = static_cast<int>(x);
   return t - (static_cast<float>(t) > x ? 1 : 0);
 }
