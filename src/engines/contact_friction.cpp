@@ -88,6 +88,7 @@ struct ContactFriction::Impl {
 
   Contact toContact(const EngineContact& e, size_t index) const;
   void assignRankKeys(std::span<const EngineContact> in);
+  std::vector<Vec3> linear, angular;  // frame mode Auto's velocities, by ObjectId
   void setFrames();
   void fillResults(std::span<const EngineContact> in);
 };
@@ -147,13 +148,15 @@ void ContactFriction::Impl::setFrames() {
   in.world_axis = settings.world_axis;
   in.fallback_axis = settings.fallback_axis;
   in.sliding_speed = settings.sliding_speed;
-  // Frame mode Auto: the engine's own velocities stand for the prediction.
-  std::vector<Vec3> linear(bodies.size()), angular(bodies.size());
-  for (size_t i = 0; i < bodies.size(); ++i) {
-    linear[i] = bodies[i].linear_velocity;
-    angular[i] = bodies[i].angular_velocity;
-  }
-  in.predict_velocities = [&](std::span<const Contact>) {
+  // Frame mode Auto: the engine's own velocities stand for the prediction, gathered only when
+  // the mode asks, into buffers kept across calls.
+  in.predict_velocities = [this](std::span<const Contact>) {
+    linear.resize(bodies.size());
+    angular.resize(bodies.size());
+    for (size_t i = 0; i < bodies.size(); ++i) {
+      linear[i] = bodies[i].linear_velocity;
+      angular[i] = bodies[i].angular_velocity;
+    }
     return PredictedVelocities{linear, angular};
   };
   computeContactFrames(settings.frame_mode, in, contacts, pool.get());
