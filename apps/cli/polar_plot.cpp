@@ -21,6 +21,16 @@ void setColour(cairo_t* cr, const Colour& c, double alpha = 1.0) {
   cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha);
 }
 
+// Strokes the current path in a curve's colour, width and dash, leaving no dash set.
+void strokeInStyle(cairo_t* cr, const CurveStyle& style) {
+  const double dash[2] = {7.0, 4.0};
+  cairo_set_dash(cr, dash, style.dashed ? 2 : 0, 0.0);
+  setColour(cr, style.colour);
+  cairo_set_line_width(cr, style.width);
+  cairo_stroke(cr);
+  cairo_set_dash(cr, nullptr, 0, 0.0);
+}
+
 // A normal map shown as RGB colours ((m + 1) / 2), box-filtered to side x side pixels. Rows
 // are stored bottom-up, so the top pixel row reads the map's last row.
 SurfacePtr thumbnail(const NormalMap& map, int side) {
@@ -231,12 +241,7 @@ void drawCurve(cairo_t* cr, const PolarAxes& a, std::span<const double> angles,
     setColour(cr, style.colour, style.fill_alpha);
     cairo_fill_preserve(cr);
   }
-  const double dash[2] = {7.0, 4.0};
-  cairo_set_dash(cr, dash, style.dashed ? 2 : 0, 0.0);
-  setColour(cr, style.colour);
-  cairo_set_line_width(cr, style.width);
-  cairo_stroke(cr);
-  cairo_set_dash(cr, nullptr, 0, 0.0);
+  strokeInStyle(cr, style);
   // Dots at the points.
   if (style.marker <= 0.0) return;
   for (size_t k = 0; k < n; ++k) {
@@ -258,12 +263,7 @@ void drawLegendEntry(cairo_t* cr, double x, double y, const CurveStyle& style,
     cairo_move_to(cr, x, y - 5.0);
     cairo_line_to(cr, x + 28.0, y - 5.0);
   }
-  const double dash[2] = {7.0, 4.0};
-  cairo_set_dash(cr, dash, style.dashed ? 2 : 0, 0.0);
-  setColour(cr, style.colour);
-  cairo_set_line_width(cr, style.width);
-  cairo_stroke(cr);
-  cairo_set_dash(cr, nullptr, 0, 0.0);
+  strokeInStyle(cr, style);
   // A dot for curves drawn with dots (not for the cone's filled polygon, as before).
   if (style.marker > 0.0 && style.fill_alpha <= 0.0) {
     cairo_new_sub_path(cr);
