@@ -104,6 +104,8 @@ nlohmann::ordered_json statsJson(const RunOptions& opt, const SceneDesc& scene, 
   for (const auto& [name, value] : sums.means()) per_step[name] = value;
   j["per_step"] = per_step;
   j["max_contacts"] = sums.max_contacts;
+  // The planar path's tables (every texture together, each built once and shared).
+  j["table_bytes"] = world.frictionProvider().tableBytes();
   char hash[17];
   std::snprintf(hash, sizeof(hash), "%016llx", static_cast<unsigned long long>(world.stateHash()));
   j["state_hash"] = hash;

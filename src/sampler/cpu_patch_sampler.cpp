@@ -11,6 +11,7 @@
 #include "parallel/thread_pool.hpp"
 #include "sampler/patch_common.hpp"
 #include "sampler/patch_geometry.hpp"
+#include "sampler/patch_planar.hpp"
 #include "sampler/patch_reuse.hpp"
 #include "sampler/patch_shade.hpp"
 
@@ -42,9 +43,13 @@ double msBetween(Clock::time_point a, Clock::time_point b) {
 
 // Scratch kept between calls: rasters, fragment arrays, sample directions.
 struct CpuPatchSampler::State {
-  State(patch::MeshCache& shared, SimdCopy copy) : meshes(shared), simd(copy) {}
-  patch::MeshCache& meshes;  // the sampler's, shared by every thread's state
-  SimdCopy simd;             // the sampler's option, for every loop this state runs
+  State(patch::MeshCache& shared, const patch::TableCache& shared_tables,
+        const CpuSamplerOptions& opt)
+      : meshes(shared), tables(shared_tables), simd(opt.simd), planar(opt.path == PatchPath::Planar) {}
+  patch::MeshCache& meshes;         // the sampler's, shared by every thread's state
+  const patch::TableCache& tables;  // the sampler's; built before the contacts are sampled
+  SimdCopy simd;                    // the sampler's option, for every loop this state runs
+  bool planar;                      // flat patches through the tables (patch_planar.hpp)
   patch::GeometryScratch geometry;
   std::array<patch::SurfaceRaster, 2> raster;  // A, B
   std::vector<uint32_t> in_patch;              // P as Volume::pack(i, j)
@@ -52,8 +57,16 @@ struct CpuPatchSampler::State {
   std::vector<Vec2> directions;
   std::array<std::array<double, kMaxDirections>, 2> sums{};
   double patch_ms = 0.0, averaging_ms = 0.0;
+  int planar_count = 0;  // contacts of this call sampled by the planar path
 
   void prepare(const FrictionSettings& settings);
+  // The planar path: false (nothing changed) where it does not apply.
+  bool samplePlanar(const patch::Volume& volume, const patch::ShapeRange (&ranges)[2],
+                    Contact& contact, const FrictionSettings& settings,
+                    std::array<patch::DepthMargins, 2>& margins);
+  // The one face of a surface that covers pixel centres (null: none), or false.
+  bool planarFace(const patch::Volume& volume, const patch::ShapeRange& range, Side side,
+                  const FrictionSettings& settings, patch::PlanarSurface& out);
   void rasterise(const patch::Volume& volume, const patch::ShapeRange (&ranges)[2], bool whole);
   // Returns the margins of the depth clip decisions on A and B (patch_reuse.hpp).
   std::array<patch::DepthMargins, 2> sample(std::span<const Body> bodies, Contact& contact,
@@ -170,6 +183,12 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   volume.simd = simd;
   const patch::ShapeRange ranges[2] = {patch::shapesOf(bodies, contact, Side::A),
                                        patch::shapesOf(bodies, contact, Side::B)};
+  std::array<patch::DepthMargins, 2> margins;
+  if (planar && images == nullptr && samplePlanar(volume, ranges, contact, settings, margins)) {
+    ++planar_count;
+    patch_ms += msBetween(t0, Clock::now());
+    return margins;
+  }
   // Rasterise both surfaces and find P, then shade P into ploughing vectors (A, then B).
   rasterise(volume, ranges, images != nullptr);
   const size_t count = in_patch.size();
@@ -198,10 +217,77 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   return {raster[0].depth, raster[1].depth};
 }
 
+bool CpuPatchSampler::State::planarFace(const patch::Volume& volume,
+                                        const patch::ShapeRange& range, Side side,
+                                        const FrictionSettings& settings,
+                                        patch::PlanarSurface& out) {
+  // Box faces and planes only; curved shapes and meshes keep the raster path.
+  for (int k = range.first; k < range.last; ++k) {
+    const ShapeType type = range.body->shapes[static_cast<size_t>(k)].type;
+    if (type != ShapeType::Box && type != ShapeType::Plane) return false;
+  }
+  patch::SurfaceRaster& r = raster[side == Side::A ? 0 : 1];
+  r.resetCollect(side);
+  for (int k = range.first; k < range.last; ++k) {
+    patch::rasteriseShape(volume, range.body->shapes[static_cast<size_t>(k)],
+                          patch::shapePose(*range.body, k), meshes, geometry, r);
+  }
+  // One flat face covers the pixel centres; any other face must cover none (so the raster
+  // path's nearest-fragment choice never arises).
+  out = {};
+  for (const patch::Planar& prim : r.planars) {
+    if (r.planars.size() > 1 && patch::coversNoCentre(volume, prim)) continue;
+    if (out.face != nullptr || !patch::isFlatFace(prim)) return false;
+    out.face = &prim;
+  }
+  if (out.face == nullptr || out.face->material.map == nullptr) return true;
+  out.tables = tables.find(out.face->material.map, out.face->material.mask, settings.mu_max,
+                           settings.directions);
+  return out.tables != nullptr;  // a texture over the tables' budget is rasterised
+}
+
+bool CpuPatchSampler::State::samplePlanar(const patch::Volume& volume,
+                                          const patch::ShapeRange (&ranges)[2], Contact& contact,
+                                          const FrictionSettings& settings,
+                                          std::array<patch::DepthMargins, 2>& margins) {
+  patch::PlanarSurface surfaces[2];
+  if (!planarFace(volume, ranges[0], Side::A, settings, surfaces[0]) ||
+      !planarFace(volume, ranges[1], Side::B, settings, surfaces[1])) {
+    return false;
+  }
+  const size_t n = directions.size();
+  std::array<std::array<double, kMaxDirections>, 2> means{};
+  int pixels = 0;
+  if (surfaces[0].face != nullptr && surfaces[1].face != nullptr) {
+    const patch::Footprint footprint =
+        patch::footprintOf(volume, *surfaces[0].face, *surfaces[1].face);
+    pixels = footprint.pixels;
+    for (size_t s = 0; s < 2 && pixels > 0; ++s) {
+      patch::planarMeans(footprint, surfaces[s], s == 0 ? Side::A : Side::B, directions,
+                         std::span<double>(means[s].data(), n));
+      // finishContact divides sums over |P| (the raster path's count of P).
+      for (size_t k = 0; k < n; ++k) means[s][k] *= pixels;
+      // The depth clip's decisions on the pixels of P: where the clip cuts the footprint its
+      // margin is 0 (the fixed tolerances alone then hold the sample).
+      patch::DepthMargins& depth = raster[s].depth;
+      for (int v = 0; v < footprint.count; ++v) {
+        const Vec2& p = footprint.vertex[static_cast<size_t>(v)];
+        depth.note(surfaces[s].face->z.at(p.x(), p.y()), volume.half_depth);
+      }
+    }
+  }
+  patch::finishContact(contact, std::span<const double>(means[0].data(), n),
+                       std::span<const double>(means[1].data(), n), pixels,
+                       patch::gainsOf(ranges[0], ranges[1], settings.mu0));
+  margins = {raster[0].depth, raster[1].depth};
+  return true;
+}
+
 CpuPatchSampler::CpuPatchSampler(const CpuSamplerOptions& options)
     : options_(options),
       meshes_(std::make_unique<patch::MeshCache>()),
-      state_(std::make_unique<State>(*meshes_, options.simd)),
+      tables_(std::make_unique<patch::TableCache>()),
+      state_(std::make_unique<State>(*meshes_, *tables_, options)),
       reuse_(std::make_unique<patch::PatchReuse>()) {}
 
 void CpuPatchSampler::forgetHistory() {
@@ -212,7 +298,30 @@ CpuPatchSampler::~CpuPatchSampler() = default;
 void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& contact,
                                     const FrictionSettings& settings, PatchImages* images) {
   validatePatchSettings(settings, "cpu sampler");
+  if (options_.path == PatchPath::Planar) prepareTables(bodies, contact, settings);
   state_->sample(bodies, contact, settings, images);
+}
+
+void CpuPatchSampler::prepareTables(std::span<const Body> bodies, const Contact& contact,
+                                    const FrictionSettings& settings) {
+  // The tables of every textured box face and plane the contact may meet, built here, on the
+  // calling thread (their rows on the pool): the threads then only look them up.
+  for (const Side side : {Side::A, Side::B}) {
+    const patch::ShapeRange range = patch::shapesOf(bodies, contact, side);
+    for (int k = range.first; k < range.last; ++k) {
+      const Shape& shape = range.body->shapes[static_cast<size_t>(k)];
+      if ((shape.type != ShapeType::Box && shape.type != ShapeType::Plane) ||
+          !shape.surface.normal_map) {
+        continue;
+      }
+      tables_->get(shape.surface.normal_map, shape.surface.mask, settings.mu_max,
+                   settings.directions, pool_);
+    }
+  }
+}
+
+size_t CpuPatchSampler::tableBytes() const {
+  return tables_->bytes();
 }
 
 void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
@@ -221,14 +330,20 @@ void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::spa
   // Contacts whose earlier sample still holds keep it; the others are sampled.
   reuse_->reuse(bodies, contacts, settings, reused_);
   reused_count_ = static_cast<int>(std::count(reused_.begin(), reused_.end(), uint8_t{1}));
+  if (options_.path == PatchPath::Planar) {
+    for (size_t i = 0; i < contacts.size(); ++i)
+      if (!reused_[i]) prepareTables(bodies, contacts[i], settings);
+  }
   if (!pool_ || pool_->concurrency() == 1) {
     // One contact after the other; scratch is reused.
     State& st = *state_;
     st.patch_ms = st.averaging_ms = 0.0;
+    st.planar_count = 0;
     for (size_t i = 0; i < contacts.size(); ++i)
       if (!reused_[i]) reuse_->margins(i) = st.sample(bodies, contacts[i], settings, nullptr);
     patch_ms_ = st.patch_ms;
     averaging_ms_ = st.averaging_ms;
+    planar_count_ = st.planar_count;
   } else {
     sampleOnPool(bodies, contacts, settings);
   }
@@ -242,8 +357,11 @@ void CpuPatchSampler::sampleOnPool(std::span<const Body> bodies, std::span<Conta
   for (size_t i = 0; i < contacts.size(); ++i)
     if (!reused_[i]) patch::prepareMeshes(*meshes_, bodies, contacts[i], false);
   while (worker_states_.size() < static_cast<size_t>(pool_->concurrency()))
-    worker_states_.push_back(std::make_unique<State>(*meshes_, options_.simd));
-  for (auto& st : worker_states_) st->patch_ms = st->averaging_ms = 0.0;
+    worker_states_.push_back(std::make_unique<State>(*meshes_, *tables_, options_));
+  for (auto& st : worker_states_) {
+    st->patch_ms = st->averaging_ms = 0.0;
+    st->planar_count = 0;
+  }
   // Each contact is sampled alone (it writes only itself), with the scratch of the thread
   // that runs it: the coefficients are the same whichever thread that is.
   pool_->forEach(contacts.size(), 4, [&](size_t i) {
@@ -252,9 +370,11 @@ void CpuPatchSampler::sampleOnPool(std::span<const Body> bodies, std::span<Conta
     reuse_->margins(i) = st.sample(bodies, contacts[i], settings, nullptr);
   });
   patch_ms_ = averaging_ms_ = 0.0;
+  planar_count_ = 0;
   for (const auto& st : worker_states_) {
     patch_ms_ += st->patch_ms;
     averaging_ms_ += st->averaging_ms;
+    planar_count_ += st->planar_count;
   }
   // Which thread samples which contact varies from step to step: every thread's scratch
   // grows to the largest, so that a warmed-up step allocates on no thread.

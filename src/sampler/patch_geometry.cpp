@@ -53,7 +53,7 @@ void pushPolygon(const Volume& volume, PolygonVertex* v, int count, bool smooth,
     return;
   }
   const auto id = static_cast<int32_t>(raster.planars.size() - 1);
-  rasterisePlanar(volume, raster.planars.back(), id, raster);
+  if (!raster.collect_only) rasterisePlanar(volume, raster.planars.back(), id, raster);
 }
 
 // Whether a box face, centred at c with edge half-vectors et and eb (contact frame), surely
@@ -131,6 +131,7 @@ void rasterisePlane(const Volume& volume, const Shape& shape, const Placement& p
   prim.i1 = prim.j1 = volume.resolution - 1;
   prim.material = materialOf(shape);
   raster.planars.push_back(prim);
+  if (raster.collect_only) return;
   rasterisePlanar(volume, raster.planars.back(), static_cast<int32_t>(raster.planars.size() - 1),
                   raster);
 }

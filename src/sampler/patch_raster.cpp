@@ -98,6 +98,15 @@ void SurfaceRaster::reset(Side s, int resolution) {
   planars.clear();
   curveds.clear();
   depth = DepthMargins::unlimited();
+  collect_only = false;
+}
+
+void SurfaceRaster::resetCollect(Side s) {
+  side = s;
+  planars.clear();
+  curveds.clear();
+  depth = DepthMargins::unlimited();
+  collect_only = true;
 }
 
 namespace {

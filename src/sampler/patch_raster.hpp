@@ -152,8 +152,13 @@ struct SurfaceRaster {
   std::vector<int> cov_lo, cov_hi;
 
   DepthMargins depth;  // of the depth clip decisions made for this surface
+  // Set by resetCollect: rasteriseShape only builds the primitives (the planar path,
+  // patch_planar.hpp, integrates over them instead of shading pixels).
+  bool collect_only = false;
 
   void reset(Side s, int resolution);
+  // Clears the primitives and margins for a collect-only pass; the pixel arrays are untouched.
+  void resetCollect(Side s);
   bool covered(int pixel) const { return key[static_cast<size_t>(pixel)] > kEmpty; }
   // Widens row j's coverage span to [lo, hi] (lo <= hi).
   void cover(int j, int lo, int hi) {

@@ -14,6 +14,12 @@ FrictionProviders FrictionProviders::builtIn() {
   providers.add("constant", [] { return std::make_unique<ConstantProvider>(); });
   providers.add("cone", [] { return std::make_unique<ConeProvider>(); });
   providers.add("cpu", [] { return std::make_unique<CpuPatchSampler>(); });
+  // The same sampler with every contact rasterised (the planar path's reference).
+  providers.add("cpu_raster", [] {
+    CpuSamplerOptions options;
+    options.path = PatchPath::Raster;
+    return std::make_unique<CpuPatchSampler>(options);
+  });
   return providers;
 }
 

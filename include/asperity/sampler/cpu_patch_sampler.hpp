@@ -25,12 +25,22 @@ namespace asperity {
 namespace patch {
 class MeshCache;
 class PatchReuse;
+class TableCache;
 }  // namespace patch
+
+// How flat patches on flat textured faces (box faces on planes and on each other) are sampled.
+enum class PatchPath {
+  Planar,  // each surface's mean over the footprint from prefiltered tables (docs/samplers.md)
+  Raster,  // every contact rasterised and shaded pixel by pixel (the reference)
+};
 
 struct CpuSamplerOptions {
   // Which compiled copy of the rasterising, shading and summing loops runs (the same bits
   // either way; tests compare them).
   SimdCopy simd = SimdCopy::Auto;
+  // Curved and mesh contacts are rasterised either way. Registered as "cpu" (Planar) and
+  // "cpu_raster" (Raster) in FrictionProviders::builtIn().
+  PatchPath path = PatchPath::Planar;
 };
 
 class CpuPatchSampler : public FrictionProvider {
@@ -38,7 +48,9 @@ class CpuPatchSampler : public FrictionProvider {
   explicit CpuPatchSampler(const CpuSamplerOptions& options = {});
   ~CpuPatchSampler() override;
 
-  std::string name() const override { return "cpu"; }
+  std::string name() const override {
+    return options_.path == PatchPath::Raster ? "cpu_raster" : "cpu";
+  }
   // Throws asperity::Error for bad settings (validatePatchSettings), a contact naming a body
   // or shape that does not exist, or a surface with a bad texture_size.
   void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
@@ -49,6 +61,10 @@ class CpuPatchSampler : public FrictionProvider {
   double lastPatchTimeMs() const override { return patch_ms_; }
   double lastAveragingTimeMs() const override { return averaging_ms_; }
   int lastReusedCount() const override { return reused_count_; }
+  int lastPlanarCount() const override { return planar_count_; }
+  // Bytes of the planar path's tables, every texture together (each built once, shared by
+  // every body that uses it).
+  size_t tableBytes() const override;
   void forgetHistory() override;
 
   // One contact, optionally with its per-pixel images. Same numbers as computeCoefficients.
@@ -59,9 +75,12 @@ class CpuPatchSampler : public FrictionProvider {
   struct State;
   void sampleOnPool(std::span<const Body> bodies, std::span<Contact> contacts,
                     const FrictionSettings& settings);
+  void prepareTables(std::span<const Body> bodies, const Contact& contact,
+                     const FrictionSettings& settings);
 
   CpuSamplerOptions options_;
   std::unique_ptr<patch::MeshCache> meshes_;           // shape meshes and BVHs, shared
+  std::unique_ptr<patch::TableCache> tables_;          // planar path tables, shared
   std::unique_ptr<State> state_;                       // the calling thread's scratch
   std::vector<std::unique_ptr<State>> worker_states_;  // one per pool thread
   std::unique_ptr<patch::PatchReuse> reuse_;           // earlier samples (patch coherence)
@@ -70,6 +89,7 @@ class CpuPatchSampler : public FrictionProvider {
   double patch_ms_ = 0.0;
   double averaging_ms_ = 0.0;
   int reused_count_ = 0;
+  int planar_count_ = 0;
 };
 
 }  // namespace asperity

@@ -4,6 +4,7 @@
 // (CPU reference, OpenGL) of SPEC 3.
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <string>
 
@@ -60,6 +61,10 @@ class FrictionProvider {
   virtual double lastAveragingTimeMs() const { return 0.0; }
   // Contacts of the last call that kept an earlier sample (FrictionSettings::reuse_pixels).
   virtual int lastReusedCount() const { return 0; }
+  // Contacts of the last call sampled from prefiltered tables (the cpu sampler's planar path).
+  virtual int lastPlanarCount() const { return 0; }
+  // Bytes of tables the provider keeps per texture (all textures together).
+  virtual size_t tableBytes() const { return 0; }
   // Forgets what earlier calls left behind (kept samples), as in a new provider.
   virtual void forgetHistory() {}
 };

@@ -1,0 +1,400 @@
+// The planar path's tables and footprint integrals (patch_planar.hpp).
+#include "sampler/patch_planar.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "asperity/error.hpp"
+#include "asperity/friction/fragment_model.hpp"
+#include "parallel/thread_pool.hpp"
+#include "sampler/patch_texture.hpp"
+
+namespace asperity::patch {
+
+namespace {
+
+// Sample points per texel along each axis when a cell's mean is taken (midpoint rule over the
+// bilinear patch): 4 x 4 per texel, whatever the cells.
+constexpr int kSamplesPerTexel = 4;
+// Cells per texel preferred when the budget allows: boundary cells then count a quarter of a
+// texel's area with their mean instead of a whole texel's.
+constexpr int kPreferredSub = 2;
+// Tabulated angles at least this many (a multiple of N): an angle step of 11.25 degrees.
+constexpr int kMinAngles = 32;
+
+constexpr double kTwoPi = 2.0 * kPi;
+
+int positiveMod(long long x, int m) {
+  const long long r = x % m;
+  return static_cast<int>(r < 0 ? r + m : r);
+}
+
+// The x interval of a convex polygon at height y (lo > hi when the line misses it).
+void spanAt(std::span<const Vec2> poly, double y, double& lo, double& hi) {
+  lo = std::numeric_limits<double>::infinity();
+  hi = -lo;
+  const size_t n = poly.size();
+  for (size_t k = 0; k < n; ++k) {
+    const Vec2& p = poly[k];
+    const Vec2& q = poly[(k + 1) % n];
+    if ((y < p.y() && y < q.y()) || (y > p.y() && y > q.y())) continue;
+    if (p.y() == q.y()) {
+      lo = std::min({lo, p.x(), q.x()});
+      hi = std::max({hi, p.x(), q.x()});
+      continue;
+    }
+    const double x = p.x() + (y - p.y()) * (q.x() - p.x()) / (q.y() - p.y());
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+  }
+}
+
+// Sutherland-Hodgman against a x + b y + c >= 0; in and out may not alias.
+int clipHalfPlane(const Vec2* in, int count, double a, double b, double c, Vec2* out) {
+  int n = 0;
+  for (int k = 0; k < count; ++k) {
+    const Vec2& p = in[k];
+    const Vec2& q = in[(k + 1) % count];
+    const double ep = a * p.x() + b * p.y() + c;
+    const double eq = a * q.x() + b * q.y() + c;
+    if (ep >= 0.0) out[n++] = p;
+    if ((ep >= 0.0) != (eq >= 0.0)) out[n++] = p + (ep / (ep - eq)) * (q - p);
+  }
+  return n;
+}
+
+// The half-planes a face keeps: its edges and both planes of the depth clip.
+struct HalfPlanes {
+  std::array<std::array<double, 3>, 6> plane{};
+  int count = 0;
+};
+
+HalfPlanes halfPlanesOf(const Volume& volume, const Planar& prim) {
+  HalfPlanes h;
+  for (int k = 0; k < prim.edge_count; ++k) {
+    const Edge& e = prim.edges[static_cast<size_t>(k)];
+    h.plane[static_cast<size_t>(h.count++)] = {e.a, e.b, e.c};
+  }
+  // |z| <= half_depth with z = c + dx x + dy y.
+  const Affine& z = prim.z;
+  const double d = volume.half_depth;
+  h.plane[static_cast<size_t>(h.count++)] = {-z.dx, -z.dy, d - z.c};
+  h.plane[static_cast<size_t>(h.count++)] = {z.dx, z.dy, d + z.c};
+  return h;
+}
+
+// The same test the raster path makes at a pixel centre: the face's edges (top-left rule) and
+// the depth clip.
+bool keepsCentre(const Volume& volume, const Planar& prim, double x, double y) {
+  for (int k = 0; k < prim.edge_count; ++k) {
+    if (!prim.edges[static_cast<size_t>(k)].inside(x, y)) return false;
+  }
+  return std::abs(prim.z.at(x, y)) <= volume.half_depth;
+}
+
+struct Polygon {
+  std::array<Vec2, 24> v{};
+  int count = 0;
+};
+
+Polygon patchSquare(const Volume& volume) {
+  const double h = 0.5 * volume.width;
+  Polygon p;
+  p.v[0] = {-h, -h}, p.v[1] = {h, -h}, p.v[2] = {h, h}, p.v[3] = {-h, h};
+  p.count = 4;
+  return p;
+}
+
+void clipBy(Polygon& poly, const HalfPlanes& h) {
+  for (int k = 0; k < h.count && poly.count > 0; ++k) {
+    Polygon next;
+    const auto& pl = h.plane[static_cast<size_t>(k)];
+    next.count = clipHalfPlane(poly.v.data(), poly.count, pl[0], pl[1], pl[2], next.v.data());
+    poly = next;
+  }
+}
+
+// Pixel centres of row j inside `poly` and kept by every listed face, counted.
+int centresInRow(const Volume& volume, const Polygon& poly, int j,
+                 std::span<const Planar* const> faces) {
+  const double y = volume.centreX(j);
+  double lo = 0.0, hi = 0.0;
+  spanAt(std::span<const Vec2>(poly.v.data(), static_cast<size_t>(poly.count)), y, lo, hi);
+  if (lo > hi) return 0;
+  // Widened by far more than rounding; the exact tests then trim the ends.
+  const double slack = 1e-6 * volume.pixel, x0 = volume.centreX(0);
+  int i0 = static_cast<int>(std::ceil((lo - slack - x0) / volume.pixel));
+  int i1 = static_cast<int>(std::floor((hi + slack - x0) / volume.pixel));
+  i0 = std::max(i0, 0), i1 = std::min(i1, volume.resolution - 1);
+  auto kept = [&](int i) {
+    for (const Planar* f : faces)
+      if (!keepsCentre(volume, *f, volume.centreX(i), y)) return false;
+    return true;
+  };
+  while (i0 <= i1 && !kept(i0)) ++i0;
+  while (i1 >= i0 && !kept(i1)) --i1;
+  return i1 - i0 + 1;
+}
+
+int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar* const> faces) {
+  if (poly.count < 3) return 0;
+  double ymin = poly.v[0].y(), ymax = ymin;
+  for (int k = 1; k < poly.count; ++k) {
+    ymin = std::min(ymin, poly.v[static_cast<size_t>(k)].y());
+    ymax = std::max(ymax, poly.v[static_cast<size_t>(k)].y());
+  }
+  int j0 = 0, j1 = -1;
+  pixelRange(volume, ymin - 1e-6 * volume.pixel, ymax + 1e-6 * volume.pixel, j0, j1);
+  int pixels = 0;
+  for (int j = j0; j <= j1; ++j) pixels += centresInRow(volume, poly, j, faces);
+  return pixels;
+}
+
+}  // namespace
+
+size_t TableLayout::bytes(int width, int height) const {
+  return static_cast<size_t>(height) * static_cast<size_t>(sub) *
+         (static_cast<size_t>(width) * static_cast<size_t>(sub) + 1) *
+         static_cast<size_t>(angles) * sizeof(float);
+}
+
+TableLayout tableLayout(int width, int height, int directions) {
+  if (width <= 0 || height <= 0 || directions <= 0) return {1, 0};
+  // A multiple of N, so that all N directions share one interpolation weight.
+  const int angles = directions * std::max(1, (kMinAngles + directions - 1) / directions);
+  for (const int n : {angles, directions}) {
+    for (int sub = kPreferredSub; sub >= 1; sub /= 2) {
+      const TableLayout layout{sub, n};
+      if (layout.bytes(width, height) <= kTableBudgetBytes) return layout;
+    }
+  }
+  return {1, 0};
+}
+
+CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask, float mu_max,
+                                     TableLayout layout, const ThreadPool* pool)
+    : cols_(map.width() * layout.sub),
+      rows_(map.height() * layout.sub),
+      sub_(layout.sub),
+      angles_(layout.angles),
+      map_width_(map.width()),
+      map_height_(map.height()) {
+  if (map.empty() || angles_ <= 0 || sub_ <= 0 || kSamplesPerTexel % sub_ != 0) {
+    throw Error("planar tables: empty map or bad layout (sub " + std::to_string(sub_) +
+                ", angles " + std::to_string(angles_) + ")");
+  }
+  directions_.resize(static_cast<size_t>(angles_));
+  for (int a = 0; a < angles_; ++a) {
+    const double t = kTwoPi * a / angles_;
+    directions_[static_cast<size_t>(a)] = Vec2f(static_cast<float>(std::cos(t)),
+                                                 static_cast<float>(std::sin(t)));
+  }
+  prefix_.assign(layout.bytes(map.width(), map.height()) / sizeof(float), 0.0f);
+  // Rows are independent: each thread writes its own, in the same order of sums.
+  forEachOn(pool, static_cast<size_t>(rows_), 4,
+            [&](size_t row) { buildRow(map, mask, mu_max, static_cast<int>(row)); });
+}
+
+void CoefficientTables::buildRow(const NormalMap& map, const GainMask* mask, float mu_max,
+                                 int row) {
+  const int q = kSamplesPerTexel / sub_;  // samples per cell along each axis
+  const auto m = static_cast<size_t>(angles_);
+  std::vector<double> cell(m), running(m, 0.0);
+  float* out = prefix_.data() + static_cast<size_t>(row) * static_cast<size_t>(cols_ + 1) * m;
+  const double inv_sub = 1.0 / sub_;
+  for (int c = 0; c < cols_; ++c) {
+    std::fill(cell.begin(), cell.end(), 0.0);
+    for (int sy = 0; sy < q; ++sy) {
+      // Texel coordinate along v, texel centres at integers (x = v H - 1/2).
+      const double ty = (row + (sy + 0.5) / q) * inv_sub;
+      const int jy = static_cast<int>(std::floor(ty));
+      const float wy = static_cast<float>(ty - jy);
+      const Vec3f* r0 = &map.at(0, wrapTexel(jy, map_height_));
+      const Vec3f* r1 = &map.at(0, wrapTexel(jy + 1, map_height_));
+      for (int sx = 0; sx < q; ++sx) {
+        const double tx = (c + (sx + 0.5) / q) * inv_sub;
+        const int ix = static_cast<int>(std::floor(tx));
+        const float wx = static_cast<float>(tx - ix);
+        const int i0 = wrapTexel(ix, map_width_), i1 = wrapTexel(ix + 1, map_width_);
+        // The blend sampleNormal makes (unnormalised).
+        const Vec3f bottom = (1.0f - wx) * r0[i0] + wx * r0[i1];
+        const Vec3f top = (1.0f - wx) * r1[i0] + wx * r1[i1];
+        const Vec3f normal = (1.0f - wy) * bottom + wy * top;
+        float gain = 1.0f;
+        if (mask != nullptr) {
+          gain = sampleMask(*mask, static_cast<float>((tx + 0.5) / map_width_),
+                            static_cast<float>((ty + 0.5) / map_height_));
+        }
+        const Vec2f g = gain * ploughingVector(normal, Side::B, mu_max);
+        for (size_t a = 0; a < m; ++a) cell[a] += std::max(0.0f, g.dot(directions_[a]));
+      }
+    }
+    // Running sums in double, each stored once as float (no rounding accumulates).
+    for (size_t a = 0; a < m; ++a) {
+      running[a] += cell[a] / (q * q);
+      out[(static_cast<size_t>(c) + 1) * m + a] = static_cast<float>(running[a]);
+    }
+  }
+}
+
+Vec2 CoefficientTables::cellOf(double u, double v) const {
+  return {(u * map_width_ - 0.5) * sub_, (v * map_height_ - 0.5) * sub_};
+}
+
+double CoefficientTables::runningSum(int row, double x, int angle) const {
+  const auto m = static_cast<size_t>(angles_);
+  const double q = std::floor(x / cols_);
+  const double rem = x - q * cols_;
+  const int c = std::min(static_cast<int>(rem), cols_ - 1);
+  const double f = rem - c;
+  const float* base = prefix_.data() + static_cast<size_t>(row) * static_cast<size_t>(cols_ + 1) * m;
+  const auto a = static_cast<size_t>(angle);
+  const double total = base[static_cast<size_t>(cols_) * m + a];
+  const double lo = base[static_cast<size_t>(c) * m + a];
+  const double hi = base[(static_cast<size_t>(c) + 1) * m + a];
+  return q * total + lo + f * (hi - lo);
+}
+
+double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<const int> which,
+                                    std::span<double> out) const {
+  std::fill(out.begin(), out.end(), 0.0);
+  if (polygon.size() < 3) return 0.0;
+  double ymin = polygon[0].y(), ymax = ymin, area = 0.0;
+  for (size_t k = 0; k < polygon.size(); ++k) {
+    const Vec2& p = polygon[k];
+    const Vec2& q = polygon[(k + 1) % polygon.size()];
+    ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
+    area += p.x() * q.y() - q.x() * p.y();
+  }
+  // Each row of cells the polygon crosses, in strips between the row's bounds and the
+  // polygon's vertices: a strip's span ends move linearly, so its middle span is its mean for a
+  // uniform density (the running sums are exact along x; along y a row's density is its
+  // cells').
+  std::array<double, 32> ys{};
+  const size_t vertices = std::min(polygon.size(), ys.size());
+  for (size_t k = 0; k < vertices; ++k) ys[k] = polygon[k].y();
+  std::sort(ys.begin(), ys.begin() + static_cast<long>(vertices));
+  size_t next = 0;
+  const auto first = static_cast<long long>(std::floor(ymin));
+  for (long long r = first; static_cast<double>(r) < ymax; ++r) {
+    const int row = positiveMod(r, rows_);
+    double y0 = std::max(static_cast<double>(r), ymin);
+    const double row_end = std::min(static_cast<double>(r + 1), ymax);
+    while (y0 < row_end) {
+      while (next < vertices && ys[next] <= y0) ++next;
+      const double y1 = next < vertices ? std::min(ys[next], row_end) : row_end;
+      double lo = 0.0, hi = 0.0;
+      spanAt(polygon, 0.5 * (y0 + y1), lo, hi);
+      if (hi > lo) {
+        for (size_t k = 0; k < which.size(); ++k)
+          out[k] += (y1 - y0) * (runningSum(row, hi, which[k]) - runningSum(row, lo, which[k]));
+      }
+      y0 = y1;
+    }
+  }
+  return 0.5 * std::abs(area);
+}
+
+const CoefficientTables* TableCache::get(const std::shared_ptr<const NormalMap>& map,
+                                         const std::shared_ptr<const GainMask>& mask,
+                                         float mu_max, int directions, const ThreadPool* pool) {
+  const Key key{map.get(), mask.get(), mu_max, directions};
+  auto it = entries_.find(key);
+  if (it != entries_.end()) return it->second.tables.get();
+  Entry entry{nullptr, map, mask};
+  const TableLayout layout = tableLayout(map->width(), map->height(), directions);
+  if (layout.angles > 0 && !map->empty())
+    entry.tables = std::make_unique<CoefficientTables>(*map, mask.get(), mu_max, layout, pool);
+  return entries_.emplace(key, std::move(entry)).first->second.tables.get();
+}
+
+const CoefficientTables* TableCache::find(const NormalMap* map, const GainMask* mask,
+                                          float mu_max, int directions) const {
+  auto it = entries_.find(Key{map, mask, mu_max, directions});
+  return it == entries_.end() ? nullptr : it->second.tables.get();
+}
+
+size_t TableCache::bytes() const {
+  size_t total = 0;
+  for (const auto& [key, entry] : entries_)
+    if (entry.tables) total += entry.tables->bytes();
+  return total;
+}
+
+bool isFlatFace(const Planar& prim) {
+  // The face's normal (frame column N, contact frame) along the patch's normal.
+  return !prim.smooth && std::abs(prim.tbn[8].c) >= std::cos(kMaxTilt);
+}
+
+bool coversNoCentre(const Volume& volume, const Planar& prim) {
+  Polygon poly = patchSquare(volume);
+  clipBy(poly, halfPlanesOf(volume, prim));
+  const Planar* faces[] = {&prim};
+  return centresIn(volume, poly, faces) == 0;
+}
+
+Footprint footprintOf(const Volume& volume, const Planar& a, const Planar& b) {
+  Polygon poly = patchSquare(volume);
+  clipBy(poly, halfPlanesOf(volume, a));
+  clipBy(poly, halfPlanesOf(volume, b));
+  Footprint f;
+  f.count = std::min(poly.count, static_cast<int>(f.vertex.size()));
+  std::copy(poly.v.begin(), poly.v.begin() + f.count, f.vertex.begin());
+  const Planar* faces[] = {&a, &b};
+  f.pixels = centresIn(volume, poly, faces);
+  return f;
+}
+
+void planarMeans(const Footprint& footprint, const PlanarSurface& surface, Side side,
+                 std::span<const Vec2> directions, std::span<double> mean) {
+  std::fill(mean.begin(), mean.end(), 0.0);
+  const CoefficientTables* tables = surface.tables;
+  if (tables == nullptr || footprint.count < 3) return;
+  const Planar& face = *surface.face;
+  // The footprint in the map's cells (uv is affine over the face).
+  std::array<Vec2, 24> cells{};
+  const auto count = static_cast<size_t>(footprint.count);
+  for (size_t k = 0; k < count; ++k) {
+    const Vec2& p = footprint.vertex[k];
+    cells[k] = tables->cellOf(face.u.at(p.x(), p.y()), face.v.at(p.x(), p.y()));
+  }
+  // Direction d in the map's tangent plane: e = s (T . d, B . d), s = -1 for A (it faces -n:
+  // ploughingVector flips its g), T and B the face's frame in the contact plane. Directions
+  // evenly spaced turn e by the same step, in the sense of the frame's handedness.
+  const double sign = side == Side::A ? -1.0 : 1.0;
+  const double tx = face.tbn[0].c, ty = face.tbn[1].c, bx = face.tbn[3].c, by = face.tbn[4].c;
+  const int n = static_cast<int>(directions.size()), angles = tables->angles();
+  const int step = (tx * by - ty * bx >= 0.0 ? 1 : -1) * (angles / n);
+  const Vec2& d0 = directions[0];
+  const double ex = sign * (tx * d0.x() + ty * d0.y()), ey = sign * (bx * d0.x() + by * d0.y());
+  double f = std::atan2(ey, ex) / kTwoPi * angles;
+  f -= angles * std::floor(f / angles);
+  int m0 = std::min(static_cast<int>(f), angles - 1);
+  double w = f - m0;
+  // Weights exact for a * cos + b * sin (every fragment away from the kink of max(0, .)).
+  constexpr double kOnGrid = 1e-9;
+  if (w > 1.0 - kOnGrid) m0 = (m0 + 1) % angles, w = 0.0;
+  const bool between = w > kOnGrid;
+  const double delta = kTwoPi / angles;
+  const double w0 = between ? std::sin((1.0 - w) * delta) / std::sin(delta) : 1.0;
+  const double w1 = between ? std::sin(w * delta) / std::sin(delta) : 0.0;
+  std::array<int, 2 * kMaxDirections> which{};
+  const int per = between ? 2 : 1;
+  for (int k = 0; k < n; ++k) {
+    const int a = positiveMod(static_cast<long long>(m0) + static_cast<long long>(k) * step, angles);
+    which[static_cast<size_t>(per * k)] = a;
+    if (between) which[static_cast<size_t>(per * k + 1)] = (a + 1) % angles;
+  }
+  std::array<double, 2 * kMaxDirections> sums{};
+  const auto used = static_cast<size_t>(per * n);
+  const double area = tables->integrate(std::span<const Vec2>(cells.data(), count),
+                                        std::span<const int>(which.data(), used),
+                                        std::span<double>(sums.data(), used));
+  if (!(area > 0.0)) return;
+  for (size_t k = 0; k < static_cast<size_t>(n); ++k) {
+    const double s = between ? w0 * sums[2 * k] + w1 * sums[2 * k + 1] : sums[k];
+    mean[k] = s / area;
+  }
+}
+
+}  // namespace asperity::patch

@@ -1,0 +1,142 @@
+// The planar path of the CPU sampler (docs/samplers.md, "Planar patches"): a flat patch on flat
+// textured faces (box faces on planes and on each other) averages each direction's fragment
+// coefficient over a convex footprint, which prefiltered tables give without shading pixels.
+//
+// The field tabulated is the one the raster path samples: at a point of the texture the normal
+// map is blended bilinearly (unnormalised, as patch_texture.hpp does), turned into a ploughing
+// vector g (fragment_model.hpp) and, through the gain mask, into max(0, g . e) for a direction e
+// in the map's tangent plane. Averaging the texels' own coefficients is a different number
+// (the ploughing term is not linear in the normal). The tables hold, per row of cells (a cell
+// is 1 / sub of a texel, between texel centres, so its normals are one bilinear patch), the
+// running sums of the cells' means along the row, at `angles` directions e evenly spaced in
+// the tangent plane. A footprint's integral is then a sum over the cell rows it crosses of one
+// span each (Green's theorem over the running sums), so its cost is the footprint's height in
+// cells, not R x R pixels.
+//
+// Approximations, each bounded in docs/samplers.md: (1) the footprint's mean of the field, not
+// its mean at the pixel centres (the raster path's own sampling noise); (2) cells cut by the
+// footprint's boundary count with their mean density; (3) a direction between two tabulated
+// angles is interpolated with weights exact for every fragment whose g lies on the same side
+// of both (the cosine law), so only fragments within one angle step of the kink of max(0, .)
+// differ; (4) a face tilted against the contact plane by at most kMaxTilt is shaded as if
+// flat.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <span>
+#include <tuple>
+#include <vector>
+
+#include "asperity/geometry/surface.hpp"
+#include "asperity/math/types.hpp"
+#include "sampler/patch_raster.hpp"
+
+namespace asperity {
+class ThreadPool;
+}
+
+namespace asperity::patch {
+
+// Largest tilt (rad) of a face against the contact plane that the planar path shades as flat:
+// the meso normals then turn by at most this, g by at most about (2 / pi) kMaxTilt (6e-4).
+inline constexpr double kMaxTilt = 1e-3;
+
+// At most this many bytes of tables per (texture, mask, mu_max, direction set).
+inline constexpr size_t kTableBudgetBytes = size_t{64} << 20;
+
+// Cells per texel along each axis and tabulated angles for a map and a direction count; angles
+// 0 when no layout fits the budget (the raster path then samples that texture).
+struct TableLayout {
+  int sub = 1;
+  int angles = 0;
+  size_t bytes(int width, int height) const;
+};
+TableLayout tableLayout(int width, int height, int directions);
+
+class CoefficientTables {
+ public:
+  // Builds the tables of `map` (and `mask`, null for none), rows in parallel on `pool` (null:
+  // this thread); the same bits for any thread count.
+  CoefficientTables(const NormalMap& map, const GainMask* mask, float mu_max, TableLayout layout,
+                    const ThreadPool* pool);
+
+  int angles() const { return angles_; }
+  size_t bytes() const { return prefix_.size() * sizeof(float); }
+
+  // The integrals over a convex polygon given in cell coordinates (x = (u W - 1/2) sub, y the
+  // same along v), counter-clockwise or clockwise, at the tabulated angles `which` (indices in
+  // [0, angles)), into out (same length). Returns the polygon's area in cells.
+  double integrate(std::span<const Vec2> polygon, std::span<const int> which,
+                   std::span<double> out) const;
+
+  // From texture coordinates (repeats) to the cell coordinates of integrate.
+  Vec2 cellOf(double u, double v) const;
+
+ private:
+  void buildRow(const NormalMap& map, const GainMask* mask, float mu_max, int row);
+  // Running sum of row `row` at x (any real; the texture repeats).
+  double runningSum(int row, double x, int angle) const;
+
+  int cols_ = 0, rows_ = 0, sub_ = 1, angles_ = 0;
+  int map_width_ = 0, map_height_ = 0;
+  std::vector<Vec2f> directions_;  // the tabulated e
+  std::vector<float> prefix_;      // [(row (cols + 1) + i) angles + a]
+};
+
+// Tables by texture identity, shared by every body whose surface uses the same map. get() builds
+// a missing entry: threads may share the cache only for entries already in it (prepare first).
+class TableCache {
+ public:
+  // Null when the layout does not fit the budget.
+  const CoefficientTables* get(const std::shared_ptr<const NormalMap>& map,
+                               const std::shared_ptr<const GainMask>& mask, float mu_max,
+                               int directions, const ThreadPool* pool);
+  // Looks an entry up without building it (null when absent or over budget).
+  const CoefficientTables* find(const NormalMap* map, const GainMask* mask, float mu_max,
+                                int directions) const;
+  size_t bytes() const;
+  size_t size() const { return entries_.size(); }
+
+ private:
+  using Key = std::tuple<const NormalMap*, const GainMask*, float, int>;
+  struct Entry {
+    std::unique_ptr<CoefficientTables> tables;  // null: over budget
+    std::shared_ptr<const NormalMap> map;       // kept alive: the key is its address
+    std::shared_ptr<const GainMask> mask;
+  };
+  std::map<Key, Entry> entries_;
+};
+
+// One surface of a planar contact: its face and what its coefficients need.
+struct PlanarSurface {
+  const Planar* face = nullptr;
+  const CoefficientTables* tables = nullptr;  // null: a flat surface (every coefficient 0)
+};
+
+// The footprint: the patch square clipped by both faces' edges and depth clips (contact frame
+// x, y), and the number of pixel centres in it (the raster path's |P|).
+struct Footprint {
+  std::array<Vec2, 24> vertex{};
+  int count = 0;
+  int pixels = 0;
+};
+
+// Whether `prim` may stand for its surface in the planar path: flat-framed, tilted by at most
+// kMaxTilt. Secondary primitives must cover no pixel centre (coversNoCentre).
+bool isFlatFace(const Planar& prim);
+// Whether no pixel centre lies in `prim` within the volume (its edges, the depth clip).
+bool coversNoCentre(const Volume& volume, const Planar& prim);
+
+// The footprint of two faces; pixels counted with the edge tests' top-left rule.
+Footprint footprintOf(const Volume& volume, const Planar& a, const Planar& b);
+
+// Mean per direction of surface `side` over the footprint into mean (N = directions.size()):
+// the tables at the directions' angles in the face's tangent plane.
+void planarMeans(const Footprint& footprint, const PlanarSurface& surface, Side side,
+                 std::span<const Vec2> directions, std::span<double> mean);
+
+}  // namespace asperity::patch
