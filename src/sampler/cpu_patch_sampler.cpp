@@ -236,6 +236,7 @@ bool CpuPatchSampler::State::planarFace(const patch::Volume& volume,
   // path's nearest-fragment choice never arises).
   out = {};
   for (const patch::Planar& prim : r.planars) {
+    patch::noteDepthDecisions(volume, prim, r.depth);
     if (r.planars.size() > 1 && patch::coversNoCentre(volume, prim)) continue;
     if (out.face != nullptr || !patch::isFlatFace(prim)) return false;
     out.face = &prim;
@@ -267,13 +268,6 @@ bool CpuPatchSampler::State::samplePlanar(const patch::Volume& volume,
                          std::span<double>(means[s].data(), n));
       // finishContact divides sums over |P| (the raster path's count of P).
       for (size_t k = 0; k < n; ++k) means[s][k] *= pixels;
-      // The depth clip's decisions on the pixels of P: where the clip cuts the footprint its
-      // margin is 0 (the fixed tolerances alone then hold the sample).
-      patch::DepthMargins& depth = raster[s].depth;
-      for (int v = 0; v < footprint.count; ++v) {
-        const Vec2& p = footprint.vertex[static_cast<size_t>(v)];
-        depth.note(surfaces[s].face->z.at(p.x(), p.y()), volume.half_depth);
-      }
     }
   }
   patch::finishContact(contact, std::span<const double>(means[0].data(), n),

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "asperity/error.hpp"
 #include "asperity/friction/fragment_model.hpp"
@@ -331,6 +332,29 @@ bool coversNoCentre(const Volume& volume, const Planar& prim) {
   clipBy(poly, halfPlanesOf(volume, prim));
   const Planar* faces[] = {&prim};
   return centresIn(volume, poly, faces) == 0;
+}
+
+void noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& depth) {
+  Polygon poly = patchSquare(volume);
+  HalfPlanes edges = halfPlanesOf(volume, prim);
+  edges.count -= 2;  // the edges alone: the depth clip is what is being decided
+  clipBy(poly, edges);
+  if (poly.count < 3) return;
+  const double h = volume.half_depth;
+  double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;
+  for (int k = 0; k < poly.count; ++k) {
+    const Vec2& p = poly.v[static_cast<size_t>(k)];
+    const double z = prim.z.at(p.x(), p.y());
+    zmin = std::min(zmin, z), zmax = std::max(zmax, z);
+  }
+  // Within the clip throughout, or beyond one plane throughout: the extremes bound every
+  // pixel's margin (z is affine). Cut by the clip: pixels lie on its line, nothing is known.
+  const bool inside = zmin >= -h && zmax <= h;
+  const bool beyond = zmin > h || zmax < -h;
+  if (inside || beyond)
+    depth.noteRange(zmin, zmax, h);
+  else
+    depth.forget();
 }
 
 Footprint footprintOf(const Volume& volume, const Planar& a, const Planar& b) {

@@ -131,6 +131,10 @@ bool isFlatFace(const Planar& prim);
 // Whether no pixel centre lies in `prim` within the volume (its edges, the depth clip).
 bool coversNoCentre(const Volume& volume, const Planar& prim);
 
+// Notes in `depth` the depth clip's decisions on the face's pixels within the patch square
+// (what the raster path notes; patch_reuse.hpp keeps a sample while they hold).
+void noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& depth);
+
 // The footprint of two faces; pixels counted with the edge tests' top-left rule.
 Footprint footprintOf(const Volume& volume, const Planar& a, const Planar& b);
 
