@@ -38,9 +38,9 @@ struct CpuSamplerOptions {
   // Which compiled copy of the rasterising, shading and summing loops runs (the same bits
   // either way; tests compare them).
   SimdCopy simd = SimdCopy::Auto;
-  // Curved and mesh contacts are rasterised either way. Registered as "cpu" (Planar) and
-  // "cpu_raster" (Raster) in FrictionProviders::builtIn().
-  PatchPath path = PatchPath::Planar;
+  // Curved and mesh contacts are rasterised either way. Registered as "cpu" (Raster, the
+  // default) and "cpu_planar" (Planar) in FrictionProviders::builtIn().
+  PatchPath path = PatchPath::Raster;
 };
 
 class CpuPatchSampler : public FrictionProvider {
@@ -49,7 +49,7 @@ class CpuPatchSampler : public FrictionProvider {
   ~CpuPatchSampler() override;
 
   std::string name() const override {
-    return options_.path == PatchPath::Raster ? "cpu_raster" : "cpu";
+    return options_.path == PatchPath::Planar ? "cpu_planar" : "cpu";
   }
   // Throws asperity::Error for bad settings (validatePatchSettings), a contact naming a body
   // or shape that does not exist, or a surface with a bad texture_size.
