@@ -296,21 +296,30 @@ void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& conta
   state_->sample(bodies, contact, settings, images);
 }
 
+void CpuPatchSampler::prepare(std::span<const Body> bodies, const FrictionSettings& settings) {
+  if (options_.path != PatchPath::Planar) return;
+  validatePatchSettings(settings, "cpu sampler");
+  for (const Body& body : bodies)
+    for (const Shape& shape : body.shapes) prepareTables(shape, settings);
+}
+
+void CpuPatchSampler::prepareTables(const Shape& shape, const FrictionSettings& settings) {
+  if ((shape.type != ShapeType::Box && shape.type != ShapeType::Plane) ||
+      !shape.surface.normal_map) {
+    return;
+  }
+  tables_->get(shape.surface.normal_map, shape.surface.mask, settings.mu_max, settings.directions,
+               pool_);
+}
+
 void CpuPatchSampler::prepareTables(std::span<const Body> bodies, const Contact& contact,
                                     const FrictionSettings& settings) {
   // The tables of every textured box face and plane the contact may meet, built here, on the
   // calling thread (their rows on the pool): the threads then only look them up.
   for (const Side side : {Side::A, Side::B}) {
     const patch::ShapeRange range = patch::shapesOf(bodies, contact, side);
-    for (int k = range.first; k < range.last; ++k) {
-      const Shape& shape = range.body->shapes[static_cast<size_t>(k)];
-      if ((shape.type != ShapeType::Box && shape.type != ShapeType::Plane) ||
-          !shape.surface.normal_map) {
-        continue;
-      }
-      tables_->get(shape.surface.normal_map, shape.surface.mask, settings.mu_max,
-                   settings.directions, pool_);
-    }
+    for (int k = range.first; k < range.last; ++k)
+      prepareTables(range.body->shapes[static_cast<size_t>(k)], settings);
   }
 }
 

@@ -17,8 +17,9 @@ namespace {
 // Sample points per texel along each axis when a cell's mean is taken (midpoint rule over the
 // bilinear patch): 4 x 4 per texel, whatever the cells.
 constexpr int kSamplesPerTexel = 4;
-// Cells per texel preferred when the budget allows: boundary cells then count a quarter of a
-// texel's area with their mean instead of a whole texel's.
+// Cells per texel preferred when the budget allows: a boundary cell then counts a quarter of a
+// texel with its mean instead of a whole one. At 1, a cell straddling a sawtooth's steep face
+// put crawling_worm's contacts up to 58 % from the raster path (9 % at 2).
 constexpr int kPreferredSub = 2;
 // Tabulated angles at least this many (a multiple of N): an angle step of 11.25 degrees.
 constexpr int kMinAngles = 32;
@@ -179,7 +180,8 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
       sub_(layout.sub),
       angles_(layout.angles),
       map_width_(map.width()),
-      map_height_(map.height()) {
+      map_height_(map.height()),
+      inv_cols_(1.0 / (map.width() * layout.sub)) {
   if (map.empty() || angles_ <= 0 || sub_ <= 0 || kSamplesPerTexel % sub_ != 0) {
     throw Error("planar tables: empty map or bad layout (sub " + std::to_string(sub_) +
                 ", angles " + std::to_string(angles_) + ")");
@@ -242,18 +244,18 @@ Vec2 CoefficientTables::cellOf(double u, double v) const {
   return {(u * map_width_ - 0.5) * sub_, (v * map_height_ - 0.5) * sub_};
 }
 
-double CoefficientTables::runningSum(int row, double x, int angle) const {
+CoefficientTables::RowPosition CoefficientTables::positionOf(int row, double x) const {
+  // Whole repeats of the row, then the cell and the fraction within it.
   const auto m = static_cast<size_t>(angles_);
-  const double q = std::floor(x / cols_);
-  const double rem = x - q * cols_;
-  const int c = std::min(static_cast<int>(rem), cols_ - 1);
-  const double f = rem - c;
+  RowPosition p;
+  p.repeats = std::floor(x * inv_cols_);
+  const double rem = x - p.repeats * cols_;
+  const int c = std::clamp(static_cast<int>(rem), 0, cols_ - 1);
+  p.fraction = rem - c;
   const float* base = prefix_.data() + static_cast<size_t>(row) * static_cast<size_t>(cols_ + 1) * m;
-  const auto a = static_cast<size_t>(angle);
-  const double total = base[static_cast<size_t>(cols_) * m + a];
-  const double lo = base[static_cast<size_t>(c) * m + a];
-  const double hi = base[(static_cast<size_t>(c) + 1) * m + a];
-  return q * total + lo + f * (hi - lo);
+  p.cell = base + static_cast<size_t>(c) * m;
+  p.total = base + static_cast<size_t>(cols_) * m;
+  return p;
 }
 
 double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<const int> which,
@@ -287,8 +289,12 @@ double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<con
       double lo = 0.0, hi = 0.0;
       spanAt(polygon, 0.5 * (y0 + y1), lo, hi);
       if (hi > lo) {
-        for (size_t k = 0; k < which.size(); ++k)
-          out[k] += (y1 - y0) * (runningSum(row, hi, which[k]) - runningSum(row, lo, which[k]));
+        const RowPosition a = positionOf(row, lo), b = positionOf(row, hi);
+        const double h = y1 - y0;
+        for (size_t k = 0; k < which.size(); ++k) {
+          const auto i = static_cast<size_t>(which[k]);
+          out[k] += h * (b.sumAt(i, angles_) - a.sumAt(i, angles_));
+        }
       }
       y0 = y1;
     }

@@ -78,11 +78,22 @@ class CoefficientTables {
 
  private:
   void buildRow(const NormalMap& map, const GainMask* mask, float mu_max, int row);
-  // Running sum of row `row` at x (any real; the texture repeats).
-  double runningSum(int row, double x, int angle) const;
+  // Where x (any real: the texture repeats) falls in row `row`, for its running sums.
+  struct RowPosition {
+    const float* cell = nullptr;   // the running sums at the cell's start (angles in a row)
+    const float* total = nullptr;  // the running sums at the row's end
+    double fraction = 0.0, repeats = 0.0;
+    double sumAt(size_t angle, int angles) const {
+      const double lo = cell[angle];
+      const double hi = cell[static_cast<size_t>(angles) + angle];
+      return repeats * total[angle] + lo + fraction * (hi - lo);
+    }
+  };
+  RowPosition positionOf(int row, double x) const;
 
   int cols_ = 0, rows_ = 0, sub_ = 1, angles_ = 0;
   int map_width_ = 0, map_height_ = 0;
+  double inv_cols_ = 1.0;
   std::vector<Vec2f> directions_;  // the tabulated e
   std::vector<float> prefix_;      // [(row (cols + 1) + i) angles + a]
 };

@@ -57,6 +57,9 @@ class CpuPatchSampler : public FrictionProvider {
                            const FrictionSettings& settings) override;
   // Contacts are sampled in parallel on `pool`, each with its own thread's scratch.
   void setThreadPool(const ThreadPool* pool) override { pool_ = pool; }
+  // The planar path's tables of every textured box and plane of `bodies` (none on the raster
+  // path).
+  void prepare(std::span<const Body> bodies, const FrictionSettings& settings) override;
   // Patch and averaging times summed over the threads (CPU time, not wall time).
   double lastPatchTimeMs() const override { return patch_ms_; }
   double lastAveragingTimeMs() const override { return averaging_ms_; }
@@ -77,6 +80,7 @@ class CpuPatchSampler : public FrictionProvider {
                     const FrictionSettings& settings);
   void prepareTables(std::span<const Body> bodies, const Contact& contact,
                      const FrictionSettings& settings);
+  void prepareTables(const Shape& shape, const FrictionSettings& settings);
 
   CpuSamplerOptions options_;
   std::unique_ptr<patch::MeshCache> meshes_;           // shape meshes and BVHs, shared

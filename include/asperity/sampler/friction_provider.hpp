@@ -40,6 +40,13 @@ class FrictionProvider {
   // The world's worker threads for the next calls (null: the calling thread only). A provider
   // may spread its contacts over them; its results must not depend on how many there are.
   virtual void setThreadPool(const ThreadPool* pool) { (void)pool; }
+  // Builds what the provider keeps per surface (the cpu sampler's planar tables) for these
+  // bodies, before the first step (World::prepare), so that no step pays for it. Optional:
+  // a provider builds what is missing when a contact first needs it.
+  virtual void prepare(std::span<const Body> bodies, const FrictionSettings& settings) {
+    (void)bodies;
+    (void)settings;
+  }
   virtual std::string name() const = 0;
   // Fills mu (count = settings.directions), covered_pixels and fallback of every contact.
   // Contacts already carry their frame (t, b). Body A of a contact is bodies[c.body_a].
