@@ -277,6 +277,30 @@ double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<con
   const size_t vertices = std::min(polygon.size(), ys.size());
   for (size_t k = 0; k < vertices; ++k) ys[k] = polygon[k].y();
   std::sort(ys.begin(), ys.begin() + static_cast<long>(vertices));
+  // The polygon's sloped edges as x = x0 + (y - y0) slope over [y0, y1]: a strip's middle lies
+  // strictly between vertices, where exactly two of them cross it (no division per strip).
+  struct Sloped {
+    double y0, y1, x0, slope;
+  };
+  std::array<Sloped, 32> edges{};
+  size_t sloped = 0;
+  for (size_t k = 0; k < vertices; ++k) {
+    Vec2 p = polygon[k], q = polygon[(k + 1) % vertices];
+    if (p.y() == q.y()) continue;
+    if (p.y() > q.y()) std::swap(p, q);
+    edges[sloped++] = {p.y(), q.y(), p.x(), (q.x() - p.x()) / (q.y() - p.y())};
+  }
+  auto span = [&](double y, double& lo, double& hi) {
+    lo = std::numeric_limits<double>::infinity();
+    hi = -lo;
+    for (size_t k = 0; k < sloped; ++k) {
+      const Sloped& e = edges[k];
+      if (y < e.y0 || y > e.y1) continue;
+      const double x = e.x0 + (y - e.y0) * e.slope;
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+  };
   size_t next = 0;
   const auto first = static_cast<long long>(std::floor(ymin));
   for (long long r = first; static_cast<double>(r) < ymax; ++r) {
@@ -287,7 +311,7 @@ double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<con
       while (next < vertices && ys[next] <= y0) ++next;
       const double y1 = next < vertices ? std::min(ys[next], row_end) : row_end;
       double lo = 0.0, hi = 0.0;
-      spanAt(polygon, 0.5 * (y0 + y1), lo, hi);
+      span(0.5 * (y0 + y1), lo, hi);
       if (hi > lo) {
         const RowPosition a = positionOf(row, lo), b = positionOf(row, hi);
         const double h = y1 - y0;
