@@ -86,7 +86,8 @@ class CoefficientTables {
     double sumAt(size_t angle, int angles) const {
       const double lo = cell[angle];
       const double hi = cell[static_cast<size_t>(angles) + angle];
-      return repeats * total[angle] + lo + fraction * (hi - lo);
+      // Most footprints lie within one repeat: the row's total is then not read.
+      return (repeats != 0.0 ? repeats * total[angle] : 0.0) + lo + fraction * (hi - lo);
     }
   };
   RowPosition positionOf(int row, double x) const;
