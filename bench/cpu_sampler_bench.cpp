@@ -1,8 +1,8 @@
 // The CPU patch sampler per contact (SPEC 3): boxes resting on a textured plane (four corner
 // contacts each, a quarter of every patch covered by both surfaces) at N = 4 and 16, R = 16,
-// from 10 to 10 000 contacts, rasterised or through the planar path's tables; and the Stanford bunny (glmark2's OBJ through loadObjMesh, all
-// 69 666 triangles or simplified to 2000, planar-projected, 1 mm deep) on the plane. Counter
-// `per_contact` is the time per contact.
+// from 10 to 10 000 contacts, rasterised or through the planar path's tables; and the Stanford
+// bunny (glmark2's OBJ through loadObjMesh, all 69 666 triangles or simplified to 2000,
+// planar-projected, 1 mm deep) on the plane. Counter `per_contact` is the time per contact.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

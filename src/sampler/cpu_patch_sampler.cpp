@@ -45,7 +45,10 @@ double msBetween(Clock::time_point a, Clock::time_point b) {
 struct CpuPatchSampler::State {
   State(patch::MeshCache& shared, const patch::TableCache& shared_tables,
         const CpuSamplerOptions& opt)
-      : meshes(shared), tables(shared_tables), simd(opt.simd), planar(opt.path == PatchPath::Planar) {}
+      : meshes(shared),
+        tables(shared_tables),
+        simd(opt.simd),
+        planar(opt.path == PatchPath::Planar) {}
   patch::MeshCache& meshes;         // the sampler's, shared by every thread's state
   const patch::TableCache& tables;  // the sampler's; built before the contacts are sampled
   SimdCopy simd;                    // the sampler's option, for every loop this state runs
@@ -217,9 +220,8 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   return {raster[0].depth, raster[1].depth};
 }
 
-bool CpuPatchSampler::State::planarFace(const patch::Volume& volume,
-                                        const patch::ShapeRange& range, Side side,
-                                        const FrictionSettings& settings,
+bool CpuPatchSampler::State::planarFace(const patch::Volume& volume, const patch::ShapeRange& range,
+                                        Side side, const FrictionSettings& settings,
                                         patch::PlanarSurface& out) {
   // Box faces and planes only; curved shapes and meshes keep the raster path.
   for (int k = range.first; k < range.last; ++k) {

@@ -156,8 +156,8 @@ int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar*
 
 size_t TableLayout::bytes(int width, int height) const {
   return static_cast<size_t>(height) * static_cast<size_t>(sub) *
-         (static_cast<size_t>(width) * static_cast<size_t>(sub) + 1) *
-         static_cast<size_t>(angles) * sizeof(float);
+         (static_cast<size_t>(width) * static_cast<size_t>(sub) + 1) * static_cast<size_t>(angles) *
+         sizeof(float);
 }
 
 TableLayout tableLayout(int width, int height, int directions) {
@@ -189,8 +189,8 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
   directions_.resize(static_cast<size_t>(angles_));
   for (int a = 0; a < angles_; ++a) {
     const double t = kTwoPi * a / angles_;
-    directions_[static_cast<size_t>(a)] = Vec2f(static_cast<float>(std::cos(t)),
-                                                 static_cast<float>(std::sin(t)));
+    directions_[static_cast<size_t>(a)] =
+        Vec2f(static_cast<float>(std::cos(t)), static_cast<float>(std::sin(t)));
   }
   prefix_.assign(layout.bytes(map.width(), map.height()) / sizeof(float), 0.0f);
   // Rows are independent: each thread writes its own, in the same order of sums.
@@ -252,7 +252,8 @@ CoefficientTables::RowPosition CoefficientTables::positionOf(int row, double x) 
   const double rem = x - p.repeats * cols_;
   const int c = std::clamp(static_cast<int>(rem), 0, cols_ - 1);
   p.fraction = rem - c;
-  const float* base = prefix_.data() + static_cast<size_t>(row) * static_cast<size_t>(cols_ + 1) * m;
+  const float* base =
+      prefix_.data() + static_cast<size_t>(row) * static_cast<size_t>(cols_ + 1) * m;
   p.cell = base + static_cast<size_t>(c) * m;
   p.total = base + static_cast<size_t>(cols_) * m;
   return p;
@@ -351,8 +352,8 @@ double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<con
 }
 
 const CoefficientTables* TableCache::get(const std::shared_ptr<const NormalMap>& map,
-                                         const std::shared_ptr<const GainMask>& mask,
-                                         float mu_max, int directions, const ThreadPool* pool) {
+                                         const std::shared_ptr<const GainMask>& mask, float mu_max,
+                                         int directions, const ThreadPool* pool) {
   const Key key{map.get(), mask.get(), mu_max, directions};
   auto it = entries_.find(key);
   if (it != entries_.end()) return it->second.tables.get();
@@ -363,8 +364,8 @@ const CoefficientTables* TableCache::get(const std::shared_ptr<const NormalMap>&
   return entries_.emplace(key, std::move(entry)).first->second.tables.get();
 }
 
-const CoefficientTables* TableCache::find(const NormalMap* map, const GainMask* mask,
-                                          float mu_max, int directions) const {
+const CoefficientTables* TableCache::find(const NormalMap* map, const GainMask* mask, float mu_max,
+                                          int directions) const {
   auto it = entries_.find(Key{map, mask, mu_max, directions});
   return it == entries_.end() ? nullptr : it->second.tables.get();
 }
@@ -459,7 +460,8 @@ void planarMeans(const Footprint& footprint, const PlanarSurface& surface, Side 
   std::array<int, 2 * kMaxDirections> which{};
   const int per = between ? 2 : 1;
   for (int k = 0; k < n; ++k) {
-    const int a = positiveMod(static_cast<long long>(m0) + static_cast<long long>(k) * step, angles);
+    const int a =
+        positiveMod(static_cast<long long>(m0) + static_cast<long long>(k) * step, angles);
     which[static_cast<size_t>(per * k)] = a;
     if (between) which[static_cast<size_t>(per * k + 1)] = (a + 1) % angles;
   }

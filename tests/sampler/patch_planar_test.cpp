@@ -67,8 +67,9 @@ std::unique_ptr<World> boxOnPlane(const std::shared_ptr<const NormalMap>& map, d
   ground.shapes[0].surface.normal_map = map;
   ground.shapes[0].surface.texture_size = 0.2;
   world->createBody(ground);
-  BodyDesc box = boxDesc("box", Vec3::Constant(0.1),
-                         {Vec3(0.013, -0.021, 0.0999), Quat(Eigen::AngleAxisd(yaw, Vec3::UnitZ()))});
+  BodyDesc box =
+      boxDesc("box", Vec3::Constant(0.1),
+              {Vec3(0.013, -0.021, 0.0999), Quat(Eigen::AngleAxisd(yaw, Vec3::UnitZ()))});
   box.shapes[0].surface.normal_map = map;
   box.shapes[0].surface.texture_size = 0.17;
   world->createBody(box);
@@ -106,8 +107,10 @@ TEST(PlanarPath, UniformSlopeBoxOnPlaneMatchesTheRasterPath) {
 // noise is its difference from that).
 class Compared : public FrictionProvider {
  public:
-  Compared() : raster_(options(PatchPath::Raster)), fine_(options(PatchPath::Raster)),
-               planar_(options(PatchPath::Planar)) {}
+  Compared()
+      : raster_(options(PatchPath::Raster)),
+        fine_(options(PatchPath::Raster)),
+        planar_(options(PatchPath::Planar)) {}
   std::string name() const override { return "cpu"; }
   void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                            const FrictionSettings& settings) override {
@@ -154,7 +157,8 @@ class Compared : public FrictionProvider {
     planar_apart.push_back(apart(p, r));
     noise.push_back(apart(r, f));
     planar_fine.push_back(apart(p, f));
-    for (int k = 0; k < r.mu.count; ++k) fine_sum[static_cast<size_t>(k)] += f.mu.mu[static_cast<size_t>(k)];
+    for (int k = 0; k < r.mu.count; ++k)
+      fine_sum[static_cast<size_t>(k)] += f.mu.mu[static_cast<size_t>(k)];
   }
 
   CpuPatchSampler raster_, fine_, planar_;
@@ -189,9 +193,9 @@ void checkScene(const std::string& file) {
       "%%. Per contact, worst direction: planar vs raster median %.2f %%, 99 %% %.2f %%, max "
       "%.2f %%; raster vs raster at 4R (its sampling noise) median %.2f %%, 99 %% %.2f %%\n",
       file.c_str(), c.compared, c.pixels_differ, 100 * worst_mean, 100 * worst_fine,
-      100 * raster_fine, 100 * quantile(c.planar_apart, 0.5),
-      100 * quantile(c.planar_apart, 0.99), 100 * quantile(c.planar_apart, 1.0),
-      100 * quantile(c.noise, 0.5), 100 * quantile(c.noise, 0.99));
+      100 * raster_fine, 100 * quantile(c.planar_apart, 0.5), 100 * quantile(c.planar_apart, 0.99),
+      100 * quantile(c.planar_apart, 1.0), 100 * quantile(c.noise, 0.5),
+      100 * quantile(c.noise, 0.99));
   // Each contact within 10 % of the raster path, the same pixels in P.
   EXPECT_EQ(c.pixels_differ, 0) << file;
   EXPECT_LE(quantile(c.planar_apart, 1.0), 0.10) << file;
