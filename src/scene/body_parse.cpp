@@ -75,6 +75,22 @@ GeneratorSpec parseGenerator(JsonReader r, const std::string& base_dir) {
   return spec;
 }
 
+// "height_map": FILE and "height_scale" (SPEC 13) stand in for a normal map: the generator
+// height_map over the surface's texture_size.
+void parseHeightMap(JsonReader& r, const std::string& base_dir, Surface& s) {
+  const double scale = r.number("height_scale", 0.0, Range::closed(0.0, 1e3));
+  if (!r.has("height_map")) {
+    if (r.has("height_scale")) r.failAt("height_scale", "given without a height_map");
+    return;
+  }
+  if (r.has("normal_map")) r.failAt("height_map", "give either normal_map or height_map, not both");
+  GeneratorSpec& spec = s.source.generator;
+  spec.name = "height_map";
+  spec.params["file"] = existingFile(r, "height_map", base_dir);
+  spec.params["height_scale"] = formatNumber(scale);
+  spec.params["texture_size"] = formatNumber(s.texture_size);
+}
+
 }  // namespace
 
 // "surface": the normal map (file or generator), its mapping, gain k and mask (SPEC 3, 6), and
@@ -94,6 +110,7 @@ Surface parseSurface(JsonReader r, const std::string& base_dir) {
   s.source.green = r.boolean("directx", false) ? GreenConvention::DirectX : GreenConvention::OpenGL;
   s.gain = r.number("gain", s.gain, Range::closed(0.0, 1e4));
   s.texture_size = r.number("texture_size", s.texture_size, Range::positive(kHuge));
+  parseHeightMap(r, base_dir, s);
   s.texture_rotation =
       radiansFromDegrees(r.number("texture_rotation_deg", 0.0, Range::closed(-1e6, 1e6)));
   if (r.has("mask")) s.source.mask_file = existingFile(r, "mask", base_dir);

@@ -49,6 +49,12 @@ json surfaceToJson(const Surface& s) {
   json out = json::object();
   if (!s.source.normal_map_file.empty()) {
     out["normal_map"] = s.source.normal_map_file;
+  } else if (s.source.generator.name == "height_map") {
+    // Written as read: the file and its scale (texture_size is the surface's own).
+    const auto& params = s.source.generator.params;
+    out["height_map"] = params.at("file");
+    if (params.count("height_scale") && std::stod(params.at("height_scale")) > 0.0)
+      out["height_scale"] = std::stod(params.at("height_scale"));
   } else if (!s.source.generator.name.empty()) {
     out["normal_map"] = {{"generator", s.source.generator.name},
                          {"params", paramsToJson(s.source.generator)},
