@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "asperity/contact_area/contact_area.hpp"
+#include "asperity/contact_area/mechanical.hpp"
 #include "asperity/texture/generator_heights.hpp"
 #include "asperity/texture/height_map.hpp"
 #include "cli/cli_test_support.hpp"
@@ -65,6 +66,25 @@ TEST(ContactAreaCommand, SeveralLoadsGiveAnArrayAndAMapPanelEach) {
   ASSERT_GT(png.size(), 26u);
   EXPECT_EQ(static_cast<unsigned char>(png[19]), 4 + 2 * 128 - 256);  // width 260, low byte
   EXPECT_EQ(static_cast<unsigned char>(png[25]), 0);                  // grey
+}
+
+TEST(ContactAreaCommand, MaterialsGiveThePairAndTheAdhesionTerm) {
+  const std::string dir = test::tempDir("contact");
+  const std::string b = heightsFile(dir, "plaster", 0.032);
+  const auto r = runCli({"contact-area", b, "--texture-size", "0.032", "--load", "300",
+                         "--material-b", "steel", "--material-a", "pvc", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const Mechanical &pvc = findMechanical("pvc"), &steel = findMechanical("steel");
+  const ContactArea lib =
+      solveContact(findSummits(loadHeightMapPng(b), nullptr, 0.032), contactPair(pvc, steel), 300);
+  EXPECT_DOUBLE_EQ(j["real_area"].get<double>(), lib.real_area);
+  EXPECT_DOUBLE_EQ(j["adhesion_mu"].get<double>(), pvc.shear * lib.real_area / 300.0);
+  expectOneLineError(runCli({"contact-area", b, "--texture-size", "0.032", "--load", "1",
+                             "--material-b", "marble"}),
+                     "marble");
+  expectOneLineError(runCli({"contact-area", b, "--texture-size", "0.032", "--load", "1"}),
+                     "--modulus");
 }
 
 TEST(ContactAreaCommand, BadInputIsOneLineAndNonZero) {
