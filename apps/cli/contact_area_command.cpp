@@ -68,10 +68,10 @@ nlohmann::ordered_json toJson(const ContactArea& r, double shear) {
 
 void runContactArea(const ContactAreaOptions& opt) {
   if (!(opt.texture_size > 0.0)) throw Error("contact-area: --texture-size must be positive");
-  const HeightMap b = loadHeightMapPng(opt.b_file, opt.height_scale);
+  const HeightMap b = loadHeightMap(opt.b_file, opt.height_scale);
   std::unique_ptr<HeightMap> a;
   if (!opt.a_file.empty())
-    a = std::make_unique<HeightMap>(loadHeightMapPng(opt.a_file, opt.height_scale));
+    a = std::make_unique<HeightMap>(loadHeightMap(opt.a_file, opt.height_scale));
   const SummitSet set = findSummits(b, a.get(), opt.texture_size);
   double shear = 0.0;
   const ContactMaterial material = pairFrom(opt, shear);
@@ -106,7 +106,7 @@ void registerContactAreaCommand(CLI::App& app) {
       "(Greenwood-Williamson summits, elastic-plastic): contact-area B.png [--a A.png] "
       "--texture-size M --load N --modulus PA [--hardness PA] [--material-b NAME] [--json] "
       "[--map out.png]");
-  sub->add_option("b", opt->b_file, "Height map of surface B (grey PNG, 8 or 16 bit)")->required();
+  sub->add_option("b", opt->b_file, "Height map of surface B (grey PNG, 8 or 16 bit, or float OpenEXR)")->required();
   sub->add_option("--a", opt->a_file, "Height map of surface A (default: a smooth plane)");
   sub->add_option("--height-scale", opt->height_scale,
                   "Metres per full grey range (default: the scale stored in each file)");

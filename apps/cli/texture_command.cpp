@@ -108,7 +108,7 @@ void runTexture(const TextureOptions& opt, const std::vector<std::string>& extra
 void inspectHeights(const std::string& file, double height_scale, double texture_size,
                     bool json) {
   HeightMapInfo info;
-  const HeightMap map = loadHeightMapPng(file, height_scale, &info);
+  const HeightMap map = loadHeightMap(file, height_scale, &info);
   const HeightStats st = heightStats(map, texture_size);
   if (json) {
     nlohmann::ordered_json j;
@@ -227,7 +227,10 @@ void registerTextureCommand(CLI::App& app) {
       ->capture_default_str();
   inspect->callback([=]() {
     const std::optional<std::vector<uint8_t>> bytes = readFileBytes(*inspect_file);
-    if (bytes && isGreyPng(*bytes))
+    const bool exr = inspect_file->size() > 4 &&
+                     (inspect_file->substr(inspect_file->size() - 4) == ".exr" ||
+                      inspect_file->substr(inspect_file->size() - 4) == ".EXR");
+    if (exr || (bytes && isGreyPng(*bytes)))
       inspectHeights(*inspect_file, *inspect_scale, *inspect_size, *inspect_json);
     else
       runInspect(*inspect_file, *inspect_json);

@@ -3,12 +3,14 @@
 #include "asperity/texture/height_map.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <sstream>
 
 #include "asperity/error.hpp"
 #include "asperity/texture/png_io.hpp"
+#include "texture/exr_height.hpp"
 #include "texture/png_codec.hpp"
 
 namespace asperity {
@@ -106,6 +108,17 @@ HeightMap loadHeightMapPng(const std::string& path, double height_scale, HeightM
       map.at(i, map.height - 1 - r) = static_cast<float>(
           scale * image.samples[static_cast<size_t>(r) * map.width + i]);
   if (info) *info = {header.bit_depth == 16 ? 16 : 8, scale, !(height_scale > 0.0)};
+  return map;
+}
+
+HeightMap loadHeightMap(const std::string& path, double height_scale, HeightMapInfo* info) {
+  std::string extension = path.size() >= 4 ? path.substr(path.size() - 4) : "";
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension != ".exr") return loadHeightMapPng(path, height_scale, info);
+  const double scale = height_scale > 0.0 ? height_scale : 1.0;
+  HeightMap map = exr::load(path, scale);
+  if (info) *info = {32, scale, false};
   return map;
 }
 

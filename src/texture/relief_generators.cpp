@@ -54,7 +54,7 @@ Field heightmapHeights(const GeneratorContext& ctx) {
 HeightMap physicalHeights(const GeneratorContext& ctx) {
   const std::string file = ctx.path("file");
   try {
-    return loadHeightMapPng(file, ctx.number("height_scale"));
+    return loadHeightMap(file, ctx.number("height_scale"));
   } catch (const Error& e) {
     ctx.fail(std::string("parameter 'file': ") + e.what());
   }
@@ -132,10 +132,11 @@ std::vector<GeneratorEntry> reliefGenerators() {
        makeHeightmap, heightmapHeights});
   entries.push_back(
       {{"height_map",
-        "normals from a grey PNG height map at physical scale (8 or 16 bit): heights grey * "
-        "height_scale metres over a texture texture_size metres wide, central differences "
+        "normals from a grey PNG (8 or 16 bit) or float OpenEXR height map at physical scale: "
+        "heights grey * height_scale metres (EXR: value * height_scale, 0 = 1) over a texture "
+        "texture_size metres wide, central differences "
         "wrapping (SPEC 13); a surface's \"height_map\" key; the map has the file's size",
-        {pathParam("file", "PNG height map (grey): black = 0, white = height_scale"),
+        {pathParam("file", "height map: grey PNG (black = 0, white = height_scale) or .exr"),
          numberParam("height_scale", 0.0, 0.0, 1e3,
                      "metres per full grey range (0: the scale stored in the file)"),
          numberParam("texture_size", 0.25, 1e-9, 1e6,

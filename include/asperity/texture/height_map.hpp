@@ -43,6 +43,13 @@ struct HeightMapInfo {
 HeightMap loadHeightMapPng(const std::string& path, double height_scale = 0.0,
                            HeightMapInfo* info = nullptr);
 
+// A height map by its file name: `.exr` (any case) is a 32-bit float OpenEXR file whose values
+// are multiplied by height_scale (<= 0: 1, the values are metres; the channel named height, Z,
+// Y or R, or the only one), anything else a PNG as loadHeightMapPng. Builds without Debian's
+// libopenexr-dev refuse EXR files with an error saying so.
+HeightMap loadHeightMap(const std::string& path, double height_scale = 0.0,
+                        HeightMapInfo* info = nullptr);
+
 // Writes a 16-bit greyscale PNG whose full range spans the map's heights (min at 0), storing
 // that range (metres) under kHeightScaleKey; returns it (0 for a flat map, written all black).
 double saveHeightMapPng(const HeightMap& map, const std::string& path);
