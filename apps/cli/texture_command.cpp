@@ -177,6 +177,40 @@ void runInspect(const std::string& file, bool json) {
   std::cout << line;
 }
 
+// `texture inspect FILE [--json]` reads a map instead of writing one: a normal map, or a height
+// map (grey PNG, .exr), whose roughness needs the physical scale.
+CLI::App* registerInspect(CLI::App& sub) {
+  struct InspectOptions {
+    std::string file;
+    bool json = false;
+    double height_scale = 0.0;
+    double texture_size = 0.25;
+  };
+  auto opt = std::make_shared<InspectOptions>();
+  CLI::App* inspect = sub.add_subcommand("inspect",
+                                         "Report a normal map (PNG, JPEG): size, bits, texels "
+                                         "that are not normals, the green convention its slopes "
+                                         "fit, mean slope, box cone; or a height map (grey PNG, "
+                                         ".exr): Ra, Rq, rms slope, correlation length");
+  inspect->add_option("file", opt->file, "Normal map (PNG, JPEG) or height map")->required();
+  inspect->add_flag("--json", opt->json, "Print JSON");
+  inspect->add_option("--height-scale", opt->height_scale,
+                      "Height map: metres per full range (default: the one stored in the file)")
+      ->check(CLI::NonNegativeNumber);
+  inspect->add_option("--texture-size", opt->texture_size, "Height map: metres covered by the map")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  inspect->callback([opt]() {
+    const std::optional<std::vector<uint8_t>> bytes = readFileBytes(opt->file);
+    const std::string tail = opt->file.size() > 4 ? opt->file.substr(opt->file.size() - 4) : "";
+    if (tail == ".exr" || tail == ".EXR" || (bytes && isGreyPng(*bytes)))
+      inspectHeights(opt->file, opt->height_scale, opt->texture_size, opt->json);
+    else
+      runInspect(opt->file, opt->json);
+  });
+  return inspect;
+}
+
 }  // namespace
 
 void registerTextureCommand(CLI::App& app) {
@@ -207,34 +241,7 @@ void registerTextureCommand(CLI::App& app) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
 
-  // `texture inspect FILE [--json]` reads a map instead of writing one.
-  auto inspect_file = std::make_shared<std::string>();
-  auto inspect_json = std::make_shared<bool>(false);
-  CLI::App* inspect = sub->add_subcommand("inspect",
-                                          "Report a normal map (PNG, JPEG): size, bits, texels "
-                                          "that are not normals, the green convention "
-                                          "its slopes fit, mean slope, box cone");
-  inspect->add_option("file", *inspect_file, "Normal map image (PNG, JPEG)")->required();
-  inspect->add_flag("--json", *inspect_json, "Print JSON");
-  // A greyscale PNG is a height map: its roughness needs the physical scale.
-  auto inspect_scale = std::make_shared<double>(0.0);
-  auto inspect_size = std::make_shared<double>(0.25);
-  inspect->add_option("--height-scale", *inspect_scale,
-                      "Height map: metres per full range (default: the one stored in the file)")
-      ->check(CLI::NonNegativeNumber);
-  inspect->add_option("--texture-size", *inspect_size, "Height map: metres covered by the map")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  inspect->callback([=]() {
-    const std::optional<std::vector<uint8_t>> bytes = readFileBytes(*inspect_file);
-    const bool exr = inspect_file->size() > 4 &&
-                     (inspect_file->substr(inspect_file->size() - 4) == ".exr" ||
-                      inspect_file->substr(inspect_file->size() - 4) == ".EXR");
-    if (exr || (bytes && isGreyPng(*bytes)))
-      inspectHeights(*inspect_file, *inspect_scale, *inspect_size, *inspect_json);
-    else
-      runInspect(*inspect_file, *inspect_json);
-  });
+  CLI::App* inspect = registerInspect(*sub);
 
   sub->callback([opt, sub, inspect]() {
     if (inspect->parsed()) return;
