@@ -85,3 +85,28 @@ TEST(HeightMapSurface, MistakesAreNamed) {
 
 }  // namespace
 }  // namespace asperity
+
+namespace asperity {
+namespace {
+
+TEST(HeightMapSurface, AGltfAssetTakesTheHeightMapItsSurfaceNames) {
+  // The height map named beside a glTF asset replaces the asset's own normal map.
+  const std::string dir = test::tempDir("height_surface");
+  saveHeightMapPng(generateHeightMap(stone(), 0.08), dir + "/h.png");
+  const nlohmann::json scene = {
+      {"bodies",
+       {{{"name", "plate"},
+         {"type", "static"},
+         {"shapes",
+          {{{"type", "mesh"},
+            {"file", test::sourcePath("tests/fixtures/assets/plate.gltf")},
+            {"surface", {{"height_map", "h.png"}, {"texture_size", 0.08}}}}}}}}}};
+  std::ofstream(dir + "/asset.json") << scene.dump();
+  const std::unique_ptr<World> world = instantiate(loadScene(dir + "/asset.json"));
+  const Surface& s = world->body(world->findBody("plate")).shapes.at(0).surface;
+  ASSERT_TRUE(s.normal_map);
+  EXPECT_EQ(s.normal_map->texels(), normalsFromHeightMap(loadHeightMapPng(dir + "/h.png"), 0.08).texels());
+}
+
+}  // namespace
+}  // namespace asperity
