@@ -1,7 +1,9 @@
 // `asperity contact-area`: the real area of contact of a flat square patch of two height maps
 // pressed together (SPEC 13, docs/contact-area.md), as numbers or JSON, and optionally a picture
 // of which texels touch.
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <iostream>
 #include <memory>
 
@@ -22,28 +24,33 @@ struct ContactAreaOptions {
   double height_scale = 0.0;  // 0: each file's stored scale
   double texture_size = 0.0;
   std::vector<double> loads;
-  double modulus = 0.0;
-  double hardness = 0.0;
+  // NaN: not given (taken from the materials; hardness: none).
+  double modulus = std::numeric_limits<double>::quiet_NaN();
+  double hardness = std::numeric_limits<double>::quiet_NaN();
   bool json = false;
   std::string map;
   std::string material_a;  // presets (mechanical.hpp); A defaults to B's
   std::string material_b;
 };
 
-// E* and H from the options: given numbers win over the materials' values.
+// E* and H from the options: given numbers (even bad ones, which the solver names) win over the
+// materials' values.
 ContactMaterial pairFrom(const ContactAreaOptions& opt, double& shear) {
-  ContactMaterial material{opt.modulus, opt.hardness};
+  const bool modulus_given = !std::isnan(opt.modulus);
+  const bool hardness_given = !std::isnan(opt.hardness);
+  ContactMaterial material{modulus_given ? opt.modulus : 0.0,
+                           hardness_given ? opt.hardness : 0.0};
   shear = 0.0;
   if (!opt.material_b.empty() || !opt.material_a.empty()) {
     const std::string b_name = opt.material_b.empty() ? opt.material_a : opt.material_b;
     const Mechanical& b = findMechanical(b_name);
     const Mechanical& a = findMechanical(opt.material_a.empty() ? b_name : opt.material_a);
     const ContactMaterial pair = contactPair(a, b);
-    if (material.modulus == 0.0) material.modulus = pair.modulus;
-    if (material.hardness == 0.0) material.hardness = pair.hardness;
+    if (!modulus_given) material.modulus = pair.modulus;
+    if (!hardness_given) material.hardness = pair.hardness;
     shear = pairShear(a, b);
   }
-  if (material.modulus == 0.0)
+  if (!modulus_given && opt.material_a.empty() && opt.material_b.empty())
     throw Error("contact-area: give --modulus or --material-b (and --material-a)");
   return material;
 }
