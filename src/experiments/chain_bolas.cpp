@@ -156,7 +156,8 @@ Table throwTable(const std::vector<double>& speeds, const std::vector<double>& r
 // Held and fallen throws of the hold map as two sets of dots (speed, mu), and each rod's
 // sampled mu as a line across the speeds.
 Plot holdMapPlot(const std::vector<double>& heights, double mu_rough, double mu_smooth) {
-  Plot p{"Hold map: the scene's throw against a constant mu", "throw speed (m/s)", "mu", {}};
+  Plot p{"Hold map: the throw against a constant mu (lines: the rods' sampled mu)",
+         "throw speed (m/s)", "mu", {}};
   Series held{"held", {}, {}, true}, fell{"fell", {}, {}, true};
   for (size_t i = 0; i < heights.size(); ++i) {
     // grid(2,6,5) varies fastest: sample i is speed 2 + (i % 5), mu 0.1 (1 + i / 5).
@@ -165,8 +166,8 @@ Plot holdMapPlot(const std::vector<double>& heights, double mu_rough, double mu_
     Series& into = heights[i] > kHeldHeight ? held : fell;
     into.x.push_back(speed), into.y.push_back(mu);
   }
-  p.series = {held, fell, {"rough rod, sampled mu " + num(mu_rough), {2, 6}, {mu_rough, mu_rough}},
-              {"smooth rod, sampled mu " + num(mu_smooth), {2, 6}, {mu_smooth, mu_smooth}}};
+  p.series = {held, fell, {"rough " + num(mu_rough), {2, 6}, {mu_rough, mu_rough}},
+              {"smooth " + num(mu_smooth), {2, 6}, {mu_smooth, mu_smooth}}};
   return p;
 }
 

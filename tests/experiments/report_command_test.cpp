@@ -60,7 +60,7 @@ TEST(ReportCommand, EveryExperimentReproducesWithItsFrames) {
   const std::string html = readFile(dir + "/report/index.html");
   EXPECT_NE(html.find("Hold map"), std::string::npos);
   EXPECT_NE(html.find("<circle"), std::string::npos);
-  EXPECT_NE(html.find("rough rod, sampled mu"), std::string::npos);
+  EXPECT_NE(html.find("the rods' sampled mu"), std::string::npos);
 }
 
 TEST(ReportCommand, UnknownExperimentIsAnErrorListingTheKnownOnes) {
