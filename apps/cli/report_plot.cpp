@@ -141,8 +141,8 @@ std::string svgPlot(const experiments::Plot& plot, int width, int height) {
     }
     const double ly = y0 + 8 + 20.0 * static_cast<double>(i);
     if (ser.dots) {
-      s += "<circle cx='" + fmt("%.1f", x0 + w + 22) + "' cy='" + fmt("%.1f", ly) + "' r='5' fill='" +
-           colour + "'/>";
+      s += "<circle cx='" + fmt("%.1f", x0 + w + 22) + "' cy='" + fmt("%.1f", ly) +
+           "' r='5' fill='" + colour + "'/>";
     } else {
       s += "<line x1='" + fmt("%.1f", x0 + w + 12) + "' x2='" + fmt("%.1f", x0 + w + 32) +
            "' y1='" + fmt("%.1f", ly) + "' y2='" + fmt("%.1f", ly) + "' stroke='" + colour +

@@ -142,13 +142,15 @@ int heldCount(const std::vector<double>& heights) {
 // The 40 throws, one row each, with both rods' outcomes.
 Table throwTable(const std::vector<double>& speeds, const std::vector<double>& rough,
                  const std::vector<double>& smooth) {
-  Table t{"40 throws (speed 2 to 6 m/s, hit moved up to 10 mm, heading up to 5 degrees): the "
-          "chain's centre of mass above the ground after 3 s",
-          {"throw", "speed (m/s)", "rough rod (m)", "smooth rod (m)"},
-          {}};
+  Table t{
+      "40 throws (speed 2 to 6 m/s, hit moved up to 10 mm, heading up to 5 degrees): the "
+      "chain's centre of mass above the ground after 3 s",
+      {"throw", "speed (m/s)", "rough rod (m)", "smooth rod (m)"},
+      {}};
   auto outcome = [](double z) { return num(z) + (z > kHeldHeight ? " held" : " fell"); };
   for (size_t i = 0; i < speeds.size(); ++i) {
-    t.rows.push_back({std::to_string(i + 1), num(speeds[i]), outcome(rough[i]), outcome(smooth[i])});
+    t.rows.push_back(
+        {std::to_string(i + 1), num(speeds[i]), outcome(rough[i]), outcome(smooth[i])});
   }
   return t;
 }
@@ -157,7 +159,9 @@ Table throwTable(const std::vector<double>& speeds, const std::vector<double>& r
 // sampled mu as a line across the speeds.
 Plot holdMapPlot(const std::vector<double>& heights, double mu_rough, double mu_smooth) {
   Plot p{"Hold map: the throw against a constant mu (lines: the rods' sampled mu)",
-         "throw speed (m/s)", "mu", {}};
+         "throw speed (m/s)",
+         "mu",
+         {}};
   Series held{"held", {}, {}, true}, fell{"fell", {}, {}, true};
   for (size_t i = 0; i < heights.size(); ++i) {
     // grid(2,6,5) varies fastest: sample i is speed 2 + (i % 5), mu 0.1 (1 + i / 5).
@@ -166,7 +170,9 @@ Plot holdMapPlot(const std::vector<double>& heights, double mu_rough, double mu_
     Series& into = heights[i] > kHeldHeight ? held : fell;
     into.x.push_back(speed), into.y.push_back(mu);
   }
-  p.series = {held, fell, {"rough " + num(mu_rough), {2, 6}, {mu_rough, mu_rough}},
+  p.series = {held,
+              fell,
+              {"rough " + num(mu_rough), {2, 6}, {mu_rough, mu_rough}},
               {"smooth " + num(mu_smooth), {2, 6}, {mu_smooth, mu_smooth}}};
   return p;
 }
@@ -182,8 +188,8 @@ void addThrows(const Experiment& e, const RunOptions& options,
     const SceneRun& run = e.scenes[r];
     const std::string path = (std::filesystem::path(options.scenes_dir) / run.file).string();
     const nlohmann::json scene = sceneJson(path, options);
-    held_heights[r] = sweptHeights(scene, path, kThrowVariations, kThrows, run.seconds,
-                                   *worlds[r], options);
+    held_heights[r] =
+        sweptHeights(scene, path, kThrowVariations, kThrows, run.seconds, *worlds[r], options);
     sampled_mu[r] = sampledRodMu(run, options);
     if (r == 0) {
       speeds = throwSpeeds(scene, path);
@@ -209,8 +215,8 @@ void addThrows(const Experiment& e, const RunOptions& options,
   out.passed = out.passed && robust;
   out.explanation += "; 40 throws: held on the rough rod in " + std::to_string(rough_held) +
                      ", on the smooth rod in " + std::to_string(smooth_held) +
-                     (robust ? "" : " (NOT robust)") + "; sampled mu: rough " +
-                     num(sampled_mu[0]) + ", smooth " + num(sampled_mu[1]);
+                     (robust ? "" : " (NOT robust)") + "; sampled mu: rough " + num(sampled_mu[0]) +
+                     ", smooth " + num(sampled_mu[1]);
 }
 
 // Chain bolas: the same throw at each rod; on the rough rod (Ra 1 mm) the chain wraps and
