@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "asperity/math/state_stream.hpp"
 #include "collision/collision_detector.hpp"
 #include "collision/cylinder_contacts.hpp"
 #include "collision/mesh_features.hpp"
@@ -129,6 +130,10 @@ struct CollisionDetector::Impl {
   std::vector<btBroadphasePair*> deferred;
   std::vector<ManifoldList> pair_manifolds;
   uint64_t next_point_id = 1;
+  // A restored state's manifolds (detector_state.cpp) by their pair of objects, until the
+  // pair's algorithm asks Dispatcher::getNewManifold for its own.
+  std::map<std::pair<const btCollisionObject*, const btCollisionObject*>, btPersistentManifold*>
+      restored_manifolds;
 
   ~Impl() { release(); }
 
@@ -190,6 +195,14 @@ struct CollisionDetector::Impl {
   void addBody(BodyId id, const Body& body);
   void prepareSdf();
   void release();
+
+  // The persistence saved and restored (detector_state.cpp).
+  struct TreeLoader;
+  void saveBroadphase(StateWriter& out) const;
+  void loadBroadphase(StateReader& in);
+  void savePairs(StateWriter& out) const;
+  void loadPairs(StateReader& in);
+  const btCollisionObject* objectOf(const TreeLoader& loader, int record) const;
 
   // One call, in order (collision_detector.cpp), and its result sorted.
   void collect(std::span<const Body> bodies, const ThreadPool* pool);

@@ -21,6 +21,15 @@ bool CollisionDetector::Impl::PairFilter::needBroadphaseCollision(btBroadphasePr
 
 btPersistentManifold* CollisionDetector::Impl::Dispatcher::getNewManifold(
     const btCollisionObject* b0, const btCollisionObject* b1) {
+  // A restored pair's algorithm takes the manifold saved for it, in its saved place.
+  if (!impl->restored_manifolds.empty()) {
+    const auto it = impl->restored_manifolds.find(std::minmax(b0, b1));
+    if (it != impl->restored_manifolds.end()) {
+      btPersistentManifold* restored = it->second;
+      impl->restored_manifolds.erase(it);
+      return restored;
+    }
+  }
   btPersistentManifold* m = btCollisionDispatcher::getNewManifold(b0, b1);
   if (impl->settings.contact_margin > 0) {
     m->setContactBreakingThreshold(
