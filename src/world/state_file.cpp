@@ -18,6 +18,8 @@ namespace {
 constexpr char kMagic[8] = {'A', 'S', 'P', 'S', 'T', 'A', 'T', 'E'};
 // Written as a double: another byte order or number format reads it as something else.
 constexpr double kByteOrderMark = 1.0 + 1.0 / 1024.0;
+// Magic, format, mark, scene id, body count, length, checksum.
+constexpr size_t kHeaderSize = sizeof(kMagic) + 4 + 8 * 5;
 
 uint64_t checksum(std::string_view bytes) {
   uint64_t hash = 1469598103934665603ull;
@@ -46,10 +48,13 @@ std::string readFile(const std::string& path) {
 // The header checked field by field; returns the state's bytes.
 std::string_view checkHeader(StateReader& in, std::string_view file, const World& world,
                              uint64_t scene_id) {
+  if (file.size() < sizeof(kMagic) || std::memcmp(file.data(), kMagic, sizeof(kMagic)) != 0)
+    throw Error("not an Asperity state file (it does not start with ASPSTATE)");
+  if (file.size() < kHeaderSize)
+    throw Error("truncated: " + std::to_string(file.size()) + " bytes, shorter than the " +
+                std::to_string(kHeaderSize) + "-byte header");
   char magic[sizeof(kMagic)];
   in.getBytes(magic, sizeof(magic));
-  if (std::memcmp(magic, kMagic, sizeof(kMagic)) != 0)
-    throw Error("not an Asperity state file (it does not start with ASPSTATE)");
   const auto format = in.get<uint32_t>();
   if (format != kStateFormat)
     throw Error("state format " + std::to_string(format) + ", this build reads format " +
