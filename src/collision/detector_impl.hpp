@@ -192,7 +192,7 @@ struct CollisionDetector::Impl {
   // Building (collision_detector.cpp).
   void build(std::span<const Body> bodies);
   void createWorld(size_t shape_count);
-  void addBody(BodyId id, const Body& body);
+  void addBody(BodyId id, const Body& body, collision_detail::BoxPolyhedra& boxes);
   void prepareSdf();
   void release();
 

@@ -11,6 +11,7 @@
 // first built afresh by setBodies for the same bodies, then given the saved structures.
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -57,6 +58,7 @@ struct CollisionDetector::Impl::TreeLoader {
   Impl& impl;
   StateReader& in;
   int depth = 0;
+  std::vector<uint8_t> placed = std::vector<uint8_t>(impl.records.size(), 0);  // leaf made
 
   btDbvtProxy* proxy(int record) const {
     if (record < 0 || static_cast<size_t>(record) >= impl.records.size())
@@ -76,7 +78,12 @@ struct CollisionDetector::Impl::TreeLoader {
     const btVector3 mx = getVector3(in);
     n->volume = btDbvtVolume::FromMM(mi, mx);
     if (in.get<uint8_t>() != 0) {
-      btDbvtProxy* p = proxy(in.get<int32_t>());
+      const int32_t record = in.get<int32_t>();
+      btDbvtProxy* p = proxy(record);
+      // Each proxy is one leaf of one tree: a state that says otherwise would have Bullet free
+      // a node twice.
+      if (placed[static_cast<size_t>(record)]++ != 0)
+        throw Error("the state's broadphase trees hold shape " + std::to_string(record) + " twice");
       n->data = p;
       p->leaf = n;
     } else {
@@ -130,6 +137,10 @@ void CollisionDetector::Impl::loadBroadphase(StateReader& in) {
     tree.m_opath = in.get<uint32_t>();
     if (in.get<uint8_t>() != 0) tree.m_root = loader.node(nullptr);
   }
+  if (std::find(loader.placed.begin(), loader.placed.end(), 0) != loader.placed.end())
+    throw Error("the state's broadphase trees miss a collision shape");
+  // Each proxy in one stage list, once (a repeat would make a list a loop).
+  std::vector<uint8_t> listed(records.size(), 0);
   for (btDbvtProxy*& head : bp.m_stageRoots) {
     std::vector<int32_t> list;
     in.getVector(list);
@@ -137,6 +148,8 @@ void CollisionDetector::Impl::loadBroadphase(StateReader& in) {
     btDbvtProxy* previous = nullptr;
     for (const int32_t record : list) {
       btDbvtProxy* p = loader.proxy(record);
+      if (listed[static_cast<size_t>(record)]++ != 0)
+        throw Error("the state's broadphase lists shape " + std::to_string(record) + " twice");
       p->links[0] = previous;
       p->links[1] = nullptr;
       (previous ? previous->links[1] : head) = p;
