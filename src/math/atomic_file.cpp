@@ -37,17 +37,11 @@ void writeAll(int fd, std::string_view bytes, const std::string& path) {
   }
 }
 
-int openForWriting(const std::string& path, const std::string& shown) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+int openForWriting(const std::string& path, const std::string& shown, bool keep) {
+  const int fd =
+      ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC | (keep ? O_APPEND : O_TRUNC), 0644);
   if (fd < 0) failOn(shown, "cannot open for writing");
   return fd;
-}
-
-// fsync for regular files; a device or pipe has nothing to flush (and may refuse).
-void syncFile(int fd, const std::string& path) {
-  struct stat st {};
-  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && ::fsync(fd) != 0)
-    failOn(path, "write failed");
 }
 
 std::string temporaryFor(const std::string& path) {
@@ -85,8 +79,13 @@ void AtomicOutput::commit() {
   }
 }
 
-RecordFile::RecordFile(const std::string& path, const std::string& shown)
-    : path_(shown.empty() ? path : shown), fd_(openForWriting(path, path_)) {}
+RecordFile::RecordFile(const std::string& path, const std::string& shown, bool keep)
+    : path_(shown.empty() ? path : shown), fd_(openForWriting(path, path_, keep)) {}
+
+bool RecordFile::regular() const {
+  struct stat st {};
+  return ::fstat(fd_, &st) == 0 && S_ISREG(st.st_mode);
+}
 
 RecordFile::~RecordFile() {
   ::close(fd_);
@@ -97,7 +96,8 @@ void RecordFile::append(std::string_view records) {
 }
 
 void RecordFile::sync() {
-  syncFile(fd_, path_);
+  // A device or pipe has nothing to flush (and may refuse).
+  if (regular() && ::fsync(fd_) != 0) failOn(path_, "write failed");
 }
 
 }  // namespace asperity

@@ -35,12 +35,13 @@ class AtomicOutput {
   bool committed_ = false;
 };
 
-// A file written in records: truncated on opening, then each append() is one write(2) of whole
-// records (straight to the kernel: nothing waits in a buffer when the process is killed).
+// A file written in records: truncated on opening (or, with `keep`, appended to), then each
+// append() is one write(2) of whole records (straight to the kernel: nothing waits in a buffer
+// when the process is killed).
 class RecordFile {
  public:
   // `shown`: the name errors give (default: path).
-  explicit RecordFile(const std::string& path, const std::string& shown = "");
+  explicit RecordFile(const std::string& path, const std::string& shown = "", bool keep = false);
   ~RecordFile();
   RecordFile(const RecordFile&) = delete;
   RecordFile& operator=(const RecordFile&) = delete;
@@ -48,6 +49,8 @@ class RecordFile {
   void append(std::string_view records);
   // To the disk, not only to the kernel (at the end of a run). Not for devices and pipes.
   void sync();
+  // A regular file (not a device or pipe): one that can be resumed or renamed.
+  bool regular() const;
 
  private:
   std::string path_;

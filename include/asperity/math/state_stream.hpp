@@ -66,9 +66,8 @@ class StateReader {
     at_ += size;
   }
   std::string getString() {
-    const auto size = count(1);
-    std::string text(bytes_.substr(at_, size));
-    at_ += size;
+    std::string text(count(1), '\0');
+    getBytes(text.data(), text.size());
     return text;
   }
   template <StateValue T>
