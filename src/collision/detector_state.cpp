@@ -214,23 +214,24 @@ void CollisionDetector::Impl::loadPairs(StateReader& in) {
     p.algorithm = in.get<uint8_t>() != 0;
   }
   // Manifolds first, in the saved order; each pair's algorithm then takes its own through
-  // Dispatcher::getNewManifold (at once, or at its first narrowphase for the lazy kinds).
+  // Dispatcher::getNewManifold (at once, or at its first narrowphase for the lazy kinds). The
+  // points go in last: a mesh pair's algorithm clears the manifold it is given.
   const size_t manifolds = in.count(12);
   restored_manifolds.clear();
+  std::vector<btPersistentManifold*> made(manifolds);
+  std::vector<std::vector<btManifoldPoint>> points(manifolds);
   for (size_t m = 0; m < manifolds; ++m) {
     const btCollisionObject* o0 = objectOf(loader, in.get<int32_t>());
     const btCollisionObject* o1 = objectOf(loader, in.get<int32_t>());
-    btPersistentManifold* mf = dispatcher->getNewManifold(o0, o1);
-    const int points = in.get<int32_t>();
-    if (points < 0 || points > MANIFOLD_CACHE_SIZE)
-      throw Error("the state's manifold " + std::to_string(m) + " has " + std::to_string(points) +
+    made[m] = dispatcher->getNewManifold(o0, o1);
+    const int count = in.get<int32_t>();
+    if (count < 0 || count > MANIFOLD_CACHE_SIZE)
+      throw Error("the state's manifold " + std::to_string(m) + " has " + std::to_string(count) +
                   " points");
-    for (int p = 0; p < points; ++p) {
-      btManifoldPoint point;
+    points[m].resize(static_cast<size_t>(count));
+    for (btManifoldPoint& point : points[m])
       in.getBytes(static_cast<void*>(&point), sizeof(btManifoldPoint));
-      mf->addManifoldPoint(point, true);
-    }
-    restored_manifolds.emplace(std::minmax(o0, o1), mf);
+    restored_manifolds.emplace(std::minmax(o0, o1), made[m]);
   }
   for (const SavedPair& p : pairs) {
     btBroadphasePair* pair = cache.addOverlappingPair(loader.proxy(p.r0), loader.proxy(p.r1));
@@ -243,6 +244,10 @@ void CollisionDetector::Impl::loadPairs(StateReader& in) {
     const btCollisionObjectWrapper w1(nullptr, o1->getCollisionShape(), o1, o1->getWorldTransform(),
                                       -1, -1);
     pair->m_algorithm = dispatcher->findAlgorithm(&w0, &w1, nullptr, BT_CONTACT_POINT_ALGORITHMS);
+  }
+  for (size_t m = 0; m < manifolds; ++m) {
+    made[m]->clearManifold();
+    for (const btManifoldPoint& point : points[m]) made[m]->addManifoldPoint(point, true);
   }
   if (static_cast<size_t>(dispatcher->getNumManifolds()) != manifolds)
     throw Error("the state's contact manifolds do not fit this scene's shapes");

@@ -63,6 +63,10 @@ const std::vector<Case> kCases = {
     {"sawtooth_plane", 60, {10, 45}},
     {"chain_bolas_rough", 120, {7, 80}},
     {"nut_bolt", 60, {20, 41}},
+    // A box on a static triangle mesh (Bullet's convex-concave pair, which clears the manifold
+    // it is given) and the convex shapes' pairs (made lazily).
+    {"examples/glb_asset", 60, {1, 37}},
+    {"examples/shapes", 60, {15, 44}},
 };
 
 TEST(Checkpoint, RoundTripsAreBitExactWithTheCpuSampler) {
