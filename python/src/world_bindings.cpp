@@ -172,7 +172,9 @@ void bindWorld(py::module_& m) {
                             "(constant, cone, cpu, gl), friction (coulomb, box, polygon), frame "
                             "(world, body, auto, texture), directions N, patch_width w (m), "
                             "patch_resolution R, threads (worker threads of a step, 0 = every "
-                            "core; the results are the same bits for any count).");
+                            "core; the results are the same bits for any count). state: a checkpoint file "
+                            "(save_state, `asperity run --save-state`) to continue from, bit for "
+                            "bit.");
   // Construction, stepping and the state arrays.
   world
       .def(py::init(&makeWorld), py::arg("scene"), py::kw_only(), py::arg("sampler") = py::none(),
