@@ -85,7 +85,8 @@ TEST(CheckpointCommand, AKilledRunContinuesFromItsLastCheckpoint) {
                               "--checkpoint-every", "0.1", "--out", csv},
                              [&] { return std::filesystem::exists(state); },
                              std::chrono::milliseconds(100)));
-  EXPECT_FALSE(std::filesystem::exists(state + ".tmp"));
+  // The kill may land while a checkpoint is written: then s.state.tmp is left beside it, and
+  // s.state is still the last complete one (loaded below).
   const std::string rows = slurpBinary(csv);
   ASSERT_FALSE(rows.empty());
   EXPECT_EQ(rows.back(), '\n');
