@@ -50,6 +50,7 @@ using namespace collision_detail;
 void CollisionDetector::Impl::release() {
   // The world removes its objects' proxies, so it goes before the objects and broadphase.
   restored_manifolds.clear();
+  lazy_algorithms.clear();
   world.reset();
   records.clear();
   broadphase.reset();

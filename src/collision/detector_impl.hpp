@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -64,6 +65,7 @@ struct CollisionDetector::Impl {
         : btCollisionDispatcher(config), impl(owner) {}
     btPersistentManifold* getNewManifold(const btCollisionObject* b0,
                                          const btCollisionObject* b1) override;
+    void freeCollisionAlgorithm(void* algorithm) override;
   };
 
   // What sorting needs of a contact found, in the order found; a manifold slot's entry is
@@ -132,8 +134,14 @@ struct CollisionDetector::Impl {
   uint64_t next_point_id = 1;
   // A restored state's manifolds (detector_state.cpp) by their pair of objects, until the
   // pair's algorithm asks Dispatcher::getNewManifold for its own.
-  std::map<std::pair<const btCollisionObject*, const btCollisionObject*>, btPersistentManifold*>
-      restored_manifolds;
+  using ObjectPair = std::pair<const btCollisionObject*, const btCollisionObject*>;
+  static ObjectPair objectPair(const btCollisionObject* a, const btCollisionObject* b) {
+    return std::less<>()(a, b) ? ObjectPair{a, b} : ObjectPair{b, a};
+  }
+  std::map<ObjectPair, btPersistentManifold*> restored_manifolds;
+  // Restored algorithms that make their manifold lazily (convex pairs), until they take it: one
+  // dropped before that releases its manifold as its destructor would have.
+  std::map<void*, ObjectPair> lazy_algorithms;
 
   ~Impl() { release(); }
 
@@ -202,6 +210,10 @@ struct CollisionDetector::Impl {
   void loadBroadphase(StateReader& in);
   void savePairs(StateWriter& out) const;
   void loadPairs(StateReader& in);
+  // The saved manifolds made empty in their order (points returned, put in after the pairs).
+  void loadManifolds(StateReader& in, const TreeLoader& loader,
+                     std::vector<btPersistentManifold*>& made,
+                     std::vector<std::vector<btManifoldPoint>>& points);
   const btCollisionObject* objectOf(const TreeLoader& loader, int record) const;
 
   // One call, in order (collision_detector.cpp), and its result sorted.

@@ -216,23 +216,9 @@ void CollisionDetector::Impl::loadPairs(StateReader& in) {
   // Manifolds first, in the saved order; each pair's algorithm then takes its own through
   // Dispatcher::getNewManifold (at once, or at its first narrowphase for the lazy kinds). The
   // points go in last: a mesh pair's algorithm clears the manifold it is given.
-  const size_t manifolds = in.count(12);
-  restored_manifolds.clear();
-  std::vector<btPersistentManifold*> made(manifolds);
-  std::vector<std::vector<btManifoldPoint>> points(manifolds);
-  for (size_t m = 0; m < manifolds; ++m) {
-    const btCollisionObject* o0 = objectOf(loader, in.get<int32_t>());
-    const btCollisionObject* o1 = objectOf(loader, in.get<int32_t>());
-    made[m] = dispatcher->getNewManifold(o0, o1);
-    const int count = in.get<int32_t>();
-    if (count < 0 || count > MANIFOLD_CACHE_SIZE)
-      throw Error("the state's manifold " + std::to_string(m) + " has " + std::to_string(count) +
-                  " points");
-    points[m].resize(static_cast<size_t>(count));
-    for (btManifoldPoint& point : points[m])
-      in.getBytes(static_cast<void*>(&point), sizeof(btManifoldPoint));
-    restored_manifolds.emplace(std::minmax(o0, o1), made[m]);
-  }
+  std::vector<btPersistentManifold*> made;
+  std::vector<std::vector<btManifoldPoint>> points;
+  loadManifolds(in, loader, made, points);
   for (const SavedPair& p : pairs) {
     btBroadphasePair* pair = cache.addOverlappingPair(loader.proxy(p.r0), loader.proxy(p.r1));
     if (!pair) throw Error("the state pairs collision shapes that this scene never pairs");
@@ -244,13 +230,38 @@ void CollisionDetector::Impl::loadPairs(StateReader& in) {
     const btCollisionObjectWrapper w1(nullptr, o1->getCollisionShape(), o1, o1->getWorldTransform(),
                                       -1, -1);
     pair->m_algorithm = dispatcher->findAlgorithm(&w0, &w1, nullptr, BT_CONTACT_POINT_ALGORITHMS);
+    if (pair->m_algorithm && restored_manifolds.count(objectPair(o0, o1)))
+      lazy_algorithms.emplace(pair->m_algorithm, objectPair(o0, o1));
   }
-  for (size_t m = 0; m < manifolds; ++m) {
+  for (size_t m = 0; m < made.size(); ++m) {
     made[m]->clearManifold();
     for (const btManifoldPoint& point : points[m]) made[m]->addManifoldPoint(point, true);
   }
-  if (static_cast<size_t>(dispatcher->getNumManifolds()) != manifolds)
+  if (static_cast<size_t>(dispatcher->getNumManifolds()) != made.size())
     throw Error("the state's contact manifolds do not fit this scene's shapes");
+}
+
+void CollisionDetector::Impl::loadManifolds(StateReader& in, const TreeLoader& loader,
+                                            std::vector<btPersistentManifold*>& made,
+                                            std::vector<std::vector<btManifoldPoint>>& points) {
+  const size_t manifolds = in.count(12);
+  restored_manifolds.clear();
+  lazy_algorithms.clear();
+  made.resize(manifolds);
+  points.resize(manifolds);
+  for (size_t m = 0; m < manifolds; ++m) {
+    const btCollisionObject* o0 = objectOf(loader, in.get<int32_t>());
+    const btCollisionObject* o1 = objectOf(loader, in.get<int32_t>());
+    made[m] = dispatcher->getNewManifold(o0, o1);
+    const int count = in.get<int32_t>();
+    if (count < 0 || count > MANIFOLD_CACHE_SIZE)
+      throw Error("the state's manifold " + std::to_string(m) + " has " + std::to_string(count) +
+                  " points");
+    points[m].resize(static_cast<size_t>(count));
+    for (btManifoldPoint& point : points[m])
+      in.getBytes(static_cast<void*>(&point), sizeof(btManifoldPoint));
+    restored_manifolds.emplace(objectPair(o0, o1), made[m]);
+  }
 }
 
 const btCollisionObject* CollisionDetector::Impl::objectOf(const TreeLoader& loader,
