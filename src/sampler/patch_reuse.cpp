@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "asperity/error.hpp"
 
 namespace asperity::patch {
 
@@ -207,6 +210,11 @@ void PatchReuse::load(StateReader& in) {
     shape_a = in.get<int>(), shape_b = in.get<int>();
     key = in.get<uint64_t>();
     in.getBytes(static_cast<void*>(&samples_[i]), sizeof(Sample));
+    // A kept sample's coefficients are copied into contacts as they are: their count must be
+    // one a contact can hold.
+    if (samples_[i].mu.count < 0 || samples_[i].mu.count > kMaxDirections)
+      throw Error("the state's kept patch sample " + std::to_string(i) + " has " +
+                  std::to_string(samples_[i].mu.count) + " directions");
   }
 }
 
