@@ -207,6 +207,14 @@ CpuPatchSampler::CpuPatchSampler(const CpuSamplerOptions& options)
 void CpuPatchSampler::forgetHistory() {
   reuse_ = std::make_unique<patch::PatchReuse>();
 }
+void CpuPatchSampler::saveHistory(StateWriter& out) const {
+  reuse_->save(out);
+}
+
+void CpuPatchSampler::loadHistory(StateReader& in) {
+  reuse_->load(in);
+}
+
 CpuPatchSampler::~CpuPatchSampler() = default;
 
 void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& contact,

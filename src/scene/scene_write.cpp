@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "asperity/error.hpp"
+#include "asperity/math/atomic_file.hpp"
 #include "asperity/scene/scene.hpp"
 #include "scene/scene_common.hpp"
 
@@ -299,11 +300,22 @@ nlohmann::json sceneToJson(const SceneDesc& scene) {
 void saveScene(const SceneDesc& scene, const std::string& path) {
   SceneDesc copy = scene;
   scene::rebaseScene(copy, scene::parentFolder(path));
-  const std::string text = sceneToJson(copy).dump(2) + "\n";
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw Error(path + ": cannot open file for writing");
-  out << text;
-  if (!out) throw Error(path + ": write failed");
+  writeFileAtomically(path, sceneToJson(copy).dump(2) + "\n");
+}
+
+uint64_t sceneStateId(const SceneDesc& scene) {
+  // Neither the thread count nor the provider changes which scene this is: the provider is
+  // checked on its own (World::loadState names it), threads change no result (SPEC 9).
+  SceneDesc copy = scene;
+  copy.settings.threads = 0;
+  copy.friction_provider.clear();
+  const std::string text = sceneToJson(copy).dump();
+  uint64_t hash = 1469598103934665603ull;
+  for (const unsigned char c : text) {
+    hash ^= c;
+    hash *= 1099511628211ull;
+  }
+  return hash ^ scene.bodies.size();
 }
 
 }  // namespace asperity

@@ -15,6 +15,7 @@
 #include <zlib.h>
 
 #include "asperity/error.hpp"
+#include "asperity/math/atomic_file.hpp"
 #include "asperity/texture/png_io.hpp"
 
 #pragma GCC diagnostic push
@@ -226,11 +227,13 @@ void write(const std::string& path, int width, int height, int channels, int bit
   }
   appendChunk(out, "IDAT", compressed.get(), static_cast<size_t>(compressed_size));
   appendChunk(out, "IEND", nullptr, 0);
-  // Write the file.
-  std::ofstream file(path, std::ios::binary);
-  file.write(reinterpret_cast<const char*>(out.data()), static_cast<std::streamsize>(out.size()));
-  if (!file) {
-    fail(path, "cannot write");
+  // Written whole under a temporary name, then renamed (asperity/math/atomic_file.hpp).
+  try {
+    writeFileAtomically(path, {reinterpret_cast<const char*>(out.data()), out.size()});
+  } catch (const Error& e) {
+    // The helper's "PATH: reason" without the path, which fail() names itself.
+    const std::string reason = e.what();
+    fail(path, "cannot write (" + reason.substr(reason.find(": ") + 2) + ")");
   }
 }
 

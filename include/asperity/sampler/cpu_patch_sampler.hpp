@@ -50,6 +50,8 @@ class CpuPatchSampler : public FrictionProvider {
   double lastAveragingTimeMs() const override { return averaging_ms_; }
   int lastReusedCount() const override { return reused_count_; }
   void forgetHistory() override;
+  void saveHistory(StateWriter& out) const override;
+  void loadHistory(StateReader& in) override;
 
   // One contact, optionally with its per-pixel images. Same numbers as computeCoefficients.
   void sampleContact(std::span<const Body> bodies, Contact& contact,

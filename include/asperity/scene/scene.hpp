@@ -104,6 +104,10 @@ nlohmann::json sceneToJson(const SceneDesc& scene);
 // Writes sceneToJson(scene) (indented, keys sorted). Relative file names are rewritten to
 // stay correct from the new file's folder. Throws asperity::Error naming the path on failure.
 void saveScene(const SceneDesc& scene, const std::string& path);
+// The id a checkpoint file names its scene by (asperity/world/state_file.hpp): FNV-1a of the
+// scene's canonical JSON (sceneToJson) and its body count, the thread count and the friction
+// provider left out (threads change no result; the state names its provider itself).
+uint64_t sceneStateId(const SceneDesc& scene);
 
 // Normal maps, masks and asset meshes that instantiate() loads or generates, kept for reuse:
 // worlds instantiated with the same SceneResources share one copy of each, so an ensemble of
