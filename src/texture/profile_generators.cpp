@@ -109,6 +109,11 @@ Field threadHeights(const GeneratorContext& ctx) {
   return profileHeights(profile, ctx.size(), ctx.axisRadians("axis"), shear);
 }
 
+// Offset of texel `index`'s centre from the nearest cone apex, at (m + 1/2) period.
+double apexOffset(int index, double period) {
+  return std::fmod(index + 0.5, period) - 0.5 * period;
+}
+
 // cones: identical cones on a square grid of `period` texels, base radius base * period, flanks
 // tilted flank_angle from the plane (height tan(alpha) (r0 - r)); normals tilt outward, away from
 // the apex. Outside the cones (and at an apex) the map is flat. The model's value for it is
@@ -117,8 +122,7 @@ NormalMap makeCones(const GeneratorContext& ctx) {
   const double period = ctx.number("period");
   const double radius = ctx.number("base") * period;
   const double slope = std::tan(radians(ctx.number("flank_angle")));
-  // Offset of a texel centre from the nearest apex, at ((m + 1/2) period, (n + 1/2) period).
-  const auto offset = [period](int index) { return std::fmod(index + 0.5, period) - 0.5 * period; };
+  const auto offset = [period](int index) { return apexOffset(index, period); };
   NormalMap map(ctx.size(), ctx.size());
   for (int j = 0; j < ctx.size(); ++j) {
     for (int i = 0; i < ctx.size(); ++i) {
@@ -137,7 +141,7 @@ Field conesHeights(const GeneratorContext& ctx) {
   const double period = ctx.number("period");
   const double radius = ctx.number("base") * period;
   const double slope = std::tan(radians(ctx.number("flank_angle")));
-  const auto offset = [period](int index) { return std::fmod(index + 0.5, period) - 0.5 * period; };
+  const auto offset = [period](int index) { return apexOffset(index, period); };
   Field heights(ctx.size(), ctx.size());
   for (int j = 0; j < ctx.size(); ++j)
     for (int i = 0; i < ctx.size(); ++i)
@@ -163,7 +167,8 @@ std::vector<GeneratorEntry> profileGenerators() {
          axisParam("0", "direction toward which the ramps rise"),
          numberParam("smoothing", 0.0, 0.0, 1024.0,
                      "width of a box filter over the slope profile (texels); 0 = sharp")}},
-       makeSawtooth, sawtoothHeights});
+       makeSawtooth,
+       sawtoothHeights});
   entries.push_back(
       {{"thread",
         "screw thread: symmetric triangular profile along the axis, facets facing +axis and "
@@ -176,7 +181,8 @@ std::vector<GeneratorEntry> profileGenerators() {
          numberParam("starts", 0.0, 0.0, 16.0,
                      "helix starts: the profile advances starts * pitch per map width across "
                      "the axis (0 = rings; whole numbers tile seamlessly)")}},
-       makeThread, threadHeights});
+       makeThread,
+       threadHeights});
   entries.push_back(
       {{"cones",
         "identical conical asperities on a square grid (Bowden and Tabor's ploughing cone): "
@@ -187,7 +193,8 @@ std::vector<GeneratorEntry> profileGenerators() {
          numberParam("base", 0.5, 0.0, 0.5,
                      "base radius as a fraction of the period (0.5: neighbours touch); the "
                      "cones cover pi base^2 of the plane")}},
-       makeCones, conesHeights});
+       makeCones,
+       conesHeights});
   return entries;
 }
 
