@@ -28,6 +28,7 @@ class StateWriter {
     putBytes(&value, sizeof(T));
   }
   void putBytes(const void* data, size_t size) {
+    if (size == 0) return;  // as in getBytes: data may be null
     const auto* p = static_cast<const char*>(data);
     bytes_.append(p, size);
   }
@@ -62,6 +63,7 @@ class StateReader {
   }
   void getBytes(void* out, size_t size) {
     need(size);
+    if (size == 0) return;  // an empty vector's data() may be null, which memcpy must not get
     std::memcpy(out, bytes_.data() + at_, size);
     at_ += size;
   }
