@@ -277,12 +277,13 @@ std::optional<Mechanical> parseMechanical(JsonReader& r, const std::string& key)
     r.failAt(key, "must be a preset name or {\"E\", \"nu\", \"H\", \"tau\"}, got " +
                       describeValue(v));
   JsonReader o = r.object(key);
+  constexpr double kPascals = 1e13;  // above any solid's modulus (diamond: 1.2e12 Pa)
   Mechanical m;
   m.name = "custom";
-  m.modulus = o.requiredNumber("E", Range::positive(kHuge));
+  m.modulus = o.requiredNumber("E", Range::positive(kPascals));
   m.poisson = o.requiredNumber("nu", Range::closed(0.0, 0.5));
-  m.hardness = o.number("H", 0.0, Range::nonNegative(kHuge));
-  m.shear = o.requiredNumber("tau", Range::positive(kHuge));
+  m.hardness = o.number("H", 0.0, Range::nonNegative(kPascals));
+  m.shear = o.requiredNumber("tau", Range::positive(kPascals));
   o.finish();
   return m;
 }
