@@ -42,6 +42,14 @@ void removeMean(HeightMap& h) {
 // after it, so a plateau of equal texels gives one summit, not none or several.
 bool isSummit(const HeightMap& h, int i, int j) {
   const float centre = h.at(i, j);
+  if (i > 0 && j > 0 && i + 1 < h.width && j + 1 < h.height) {
+    // Inside: no wrapping (the per-contact model scans every pixel of every patch).
+    const float* above = &h.values[static_cast<size_t>(j - 1) * h.width + i];
+    const float* row = above + h.width;
+    const float* below = row + h.width;
+    return above[-1] < centre && above[0] < centre && above[1] < centre && row[-1] < centre &&
+           row[1] <= centre && below[-1] <= centre && below[0] <= centre && below[1] <= centre;
+  }
   for (int dj = -1; dj <= 1; ++dj) {
     for (int di = -1; di <= 1; ++di) {
       if (di == 0 && dj == 0) continue;

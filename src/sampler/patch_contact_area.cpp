@@ -43,24 +43,40 @@ const Mechanical* lookup(const ContactAreaOptions& options, int body, int shape)
   return it == options.mechanical.end() ? nullptr : &it->second;
 }
 
+// The heights of one raster's primitives, looked up once per run of pixels of one primitive
+// (a map lookup per pixel would cost more than the rest of the model).
+struct PrimitiveHeights {
+  const SurfaceRaster& raster;
+  const HeightCache& cache;
+  int32_t id = std::numeric_limits<int32_t>::min();
+  const HeightMap* heights = nullptr;
+
+  const HeightMap* of(int32_t primitive) {
+    if (primitive != id) {
+      id = primitive;
+      const Material& m = primitive >= 0 ? raster.planars[static_cast<size_t>(primitive)].material
+                                         : raster.curveds[static_cast<size_t>(-1 - primitive)].material;
+      heights = cache.find(m.map);
+    }
+    return heights;
+  }
+};
+
 // The height (m) of the kept fragment at pixel (i, j), out of its surface toward the other
 // body, from the heights of the primitive's normal map at the fragment's uv (0: flat).
-float heightAt(const Volume& volume, const SurfaceRaster& raster, const HeightCache& cache,
-               int i, int j) {
-  const int pixel = j * volume.resolution + i;
+float heightAt(const Volume& volume, PrimitiveHeights& lookup, int i, int j) {
+  const SurfaceRaster& raster = lookup.raster;
+  const int32_t id = raster.primitive[static_cast<size_t>(j * volume.resolution + i)];
+  const HeightMap* h = lookup.of(id);
+  if (h == nullptr) return 0.0f;
   const double x = volume.centreX(i), y = volume.centreX(j);
-  const int32_t id = raster.primitive[static_cast<size_t>(pixel)];
   if (id >= 0) {
     const Planar& p = raster.planars[static_cast<size_t>(id)];
-    const HeightMap* h = cache.find(p.material.map);
-    if (h == nullptr) return 0.0f;
     const auto xf = static_cast<float>(x), yf = static_cast<float>(y);
     return h->sample(p.uf[0] + p.uf[1] * xf + p.uf[2] * yf, p.vf[0] + p.vf[1] * xf + p.vf[2] * yf);
   }
   // Curved: the hit point and its analytic uv, as the shading finds them (patch_shade.cpp).
   const Curved& c = raster.curveds[static_cast<size_t>(-1 - id)];
-  const HeightMap* h = cache.find(c.material.map);
-  if (h == nullptr) return 0.0f;
   double z = 0.0;
   castCurved(c, raster.side, x, y, z);
   const SurfaceFrame sf = surfaceFrameAt(*c.shape, -1, c.origin_local + c.to_local * Vec3(x, y, z));
@@ -78,11 +94,11 @@ bool compositeOverPatch(const Volume& volume, const std::array<SurfaceRaster, 2>
   out.width = out.height = r;
   out.values.assign(static_cast<size_t>(r * r), std::numeric_limits<float>::quiet_NaN());
   float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+  PrimitiveHeights a{rasters[0], cache}, b{rasters[1], cache};
   for (const uint32_t p : in_patch) {
     const int i = static_cast<int>(p & 0xffffu), j = static_cast<int>(p >> 16);
     const auto idx = static_cast<size_t>(j * r + i);
-    const float c = heightAt(volume, rasters[0], cache, i, j) +
-                    heightAt(volume, rasters[1], cache, i, j) + rasters[0].key[idx] +
+    const float c = heightAt(volume, a, i, j) + heightAt(volume, b, i, j) + rasters[0].key[idx] +
                     rasters[1].key[idx];
     out.values[idx] = c;
     lo = std::min(lo, c), hi = std::max(hi, c);
