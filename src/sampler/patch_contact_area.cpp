@@ -9,6 +9,7 @@
 #include "asperity/error.hpp"
 #include "asperity/geometry/shape_mesh.hpp"
 #include "asperity/texture/generator_heights.hpp"
+#include "sampler/patch_texture.hpp"
 
 namespace asperity::patch {
 
@@ -43,6 +44,18 @@ const Mechanical* lookup(const ContactAreaOptions& options, int body, int shape)
   return it == options.mechanical.end() ? nullptr : &it->second;
 }
 
+// Bilinear height at (u, v) in repeats, bracketed as the normals are (HeightMap::sample's
+// values without its libm calls, which cost more than the rest of the model).
+float sampleHeight(const HeightMap& map, float u, float v) {
+  const TexelBracket bu = bracketRepeat(u, map.width);
+  const TexelBracket bv = bracketRepeat(v, map.height);
+  const float* row0 = &map.values[static_cast<size_t>(bv.lo) * map.width];
+  const float* row1 = &map.values[static_cast<size_t>(bv.hi) * map.width];
+  const float bottom = (1.0f - bu.weight) * row0[bu.lo] + bu.weight * row0[bu.hi];
+  const float top = (1.0f - bu.weight) * row1[bu.lo] + bu.weight * row1[bu.hi];
+  return (1.0f - bv.weight) * bottom + bv.weight * top;
+}
+
 // The heights of one raster's primitives, looked up once per run of pixels of one primitive
 // (a map lookup per pixel would cost more than the rest of the model).
 struct PrimitiveHeights {
@@ -73,14 +86,15 @@ float heightAt(const Volume& volume, PrimitiveHeights& lookup, int i, int j) {
   if (id >= 0) {
     const Planar& p = raster.planars[static_cast<size_t>(id)];
     const auto xf = static_cast<float>(x), yf = static_cast<float>(y);
-    return h->sample(p.uf[0] + p.uf[1] * xf + p.uf[2] * yf, p.vf[0] + p.vf[1] * xf + p.vf[2] * yf);
+    return sampleHeight(*h, p.uf[0] + p.uf[1] * xf + p.uf[2] * yf,
+                        p.vf[0] + p.vf[1] * xf + p.vf[2] * yf);
   }
   // Curved: the hit point and its analytic uv, as the shading finds them (patch_shade.cpp).
   const Curved& c = raster.curveds[static_cast<size_t>(-1 - id)];
   double z = 0.0;
   castCurved(c, raster.side, x, y, z);
   const SurfaceFrame sf = surfaceFrameAt(*c.shape, -1, c.origin_local + c.to_local * Vec3(x, y, z));
-  return h->sample(static_cast<float>(sf.uv.x()), static_cast<float>(sf.uv.y()));
+  return sampleHeight(*h, static_cast<float>(sf.uv.x()), static_cast<float>(sf.uv.y()));
 }
 
 // The composite roughness over the patch: at each pixel of P, how far the two surfaces'
