@@ -97,16 +97,25 @@ float heightAt(const Volume& volume, PrimitiveHeights& lookup, int i, int j) {
   return sampleHeight(*h, static_cast<float>(sf.uv.x()), static_cast<float>(sf.uv.y()));
 }
 
-// The composite roughness over the patch: at each pixel of P, how far the two surfaces'
-// heights reach past the macro gap between their rasterised faces (keys: z for B, -z for A,
-// so key_A + key_B = z_B - z_A = -gap). Pixels outside P lie below P's lowest by P's span,
-// so that they never touch. Returns false when P is flat (the model's full contact).
+// The composite roughness over P's bounding box (origin i0, j0 in the patch): at each pixel of
+// P, how far the two surfaces' heights reach past the macro gap between their rasterised faces
+// (keys: z for B, -z for A, so key_A + key_B = z_B - z_A = -gap). Other pixels lie below P's
+// lowest by P's span, so that they never touch. Returns false when P is flat (the model's full
+// contact). Only the box is scanned for summits: a contact often covers a part of its patch.
 bool compositeOverPatch(const Volume& volume, const std::array<SurfaceRaster, 2>& rasters,
                         std::span<const uint32_t> in_patch, const HeightCache& cache,
-                        HeightMap& out) {
+                        AreaScratch& s) {
   const int r = volume.resolution;
-  out.width = out.height = r;
-  out.values.assign(static_cast<size_t>(r * r), std::numeric_limits<float>::quiet_NaN());
+  int i0 = r, j0 = r, i1 = -1, j1 = -1;
+  for (const uint32_t p : in_patch) {
+    const int i = static_cast<int>(p & 0xffffu), j = static_cast<int>(p >> 16);
+    i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
+  }
+  HeightMap& out = s.composite;
+  s.i0 = i0, s.j0 = j0;
+  out.width = i1 - i0 + 1, out.height = j1 - j0 + 1;
+  out.values.assign(static_cast<size_t>(out.width * out.height),
+                    std::numeric_limits<float>::quiet_NaN());
   float lo = std::numeric_limits<float>::infinity(), hi = -lo;
   PrimitiveHeights a{rasters[0], cache}, b{rasters[1], cache};
   for (const uint32_t p : in_patch) {
@@ -114,7 +123,7 @@ bool compositeOverPatch(const Volume& volume, const std::array<SurfaceRaster, 2>
     const auto idx = static_cast<size_t>(j * r + i);
     const float c = heightAt(volume, a, i, j) + heightAt(volume, b, i, j) + rasters[0].key[idx] +
                     rasters[1].key[idx];
-    out.values[idx] = c;
+    out.at(i - i0, j - j0) = c;
     lo = std::min(lo, c), hi = std::max(hi, c);
   }
   if (!(hi > lo)) return false;
@@ -125,16 +134,16 @@ bool compositeOverPatch(const Volume& volume, const std::array<SurfaceRaster, 2>
 }
 
 // The ploughing vectors of the pixels in contact, A's then B's, into scratch; returns their count.
-size_t gatherInContact(const Volume& volume, std::span<const uint32_t> in_patch, const float* gx,
-                       const float* gy, AreaScratch& s) {
+size_t gatherInContact(std::span<const uint32_t> in_patch, const float* gx, const float* gy,
+                       AreaScratch& s) {
   const size_t count = in_patch.size();
   s.gx.resize(2 * count);
   s.gy.resize(2 * count);
   size_t n = 0;
   for (size_t k = 0; k < count; ++k) {
     const uint32_t p = in_patch[k];
-    const size_t idx = (p >> 16) * static_cast<size_t>(volume.resolution) + (p & 0xffffu);
-    if (!s.mask[idx]) continue;
+    const int i = static_cast<int>(p & 0xffffu) - s.i0, j = static_cast<int>(p >> 16) - s.j0;
+    if (!s.mask[static_cast<size_t>(j * s.composite.width + i)]) continue;
     s.gx[n] = gx[k], s.gy[n] = gy[k];
     s.gx[count + n] = gx[count + k], s.gy[count + n] = gy[count + k];
     ++n;
@@ -173,15 +182,18 @@ int finishAreaContact(const Volume& volume, const std::array<SurfaceRaster, 2>& 
   const double light = 1e-4 * stiff * apparent;
   const double load = std::max(contact.lambda_n / in.options->dt, light);
   double real_area = apparent;
+  // Without relief every pixel of P is in contact.
+  s.i0 = s.j0 = 0;
+  s.composite.width = volume.resolution;
   s.mask.assign(static_cast<size_t>(volume.resolution * volume.resolution), 1);
-  if (count > 0 && compositeOverPatch(volume, rasters, in_patch, *in.heights, s.composite)) {
-    findSummitsInto(s.composite, volume.width, s.summits);
+  if (count > 0 && compositeOverPatch(volume, rasters, in_patch, *in.heights, s)) {
+    findSummitsInto(s.composite, s.composite.width * volume.pixel, s.summits);
     s.summits.apparent_area = apparent;
     const ContactArea area = solveContact(s.summits, material, load);
     real_area = area.real_area;
     contactMaskInto(s.summits, area, s.mask);
   }
-  const size_t touching = count > 0 ? gatherInContact(volume, in_patch, gx, gy, s) : 0;
+  const size_t touching = count > 0 ? gatherInContact(in_patch, gx, gy, s) : 0;
   // Adhesion, capped as the ploughing term is (a flat pair is in full contact at any load).
   PatchGains gains = in.gains;
   gains.mu0 = std::min(pairShear(pair[0], pair[1]) * real_area / load, in.mu_max);

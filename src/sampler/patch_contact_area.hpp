@@ -38,7 +38,8 @@ class HeightCache {
 
 // One thread's scratch for the model (no allocation once warm).
 struct AreaScratch {
-  HeightMap composite;
+  HeightMap composite;  // over P's bounding box, its pixel (0, 0) at patch pixel (i0, j0)
+  int i0 = 0, j0 = 0;
   SummitSet summits;
   std::vector<unsigned char> mask;
   std::vector<float> gx, gy;  // ploughing vectors of the pixels in contact, A then B
