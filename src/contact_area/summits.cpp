@@ -41,24 +41,14 @@ void removeMean(HeightMap& h) {
 // A summit is higher than the neighbours before it in row order and not lower than those
 // after it, so a plateau of equal texels gives one summit, not none or several.
 bool isSummit(const HeightMap& h, int i, int j) {
+  // Wrapped neighbour rows and columns without a division (the per-contact model scans every
+  // pixel of every patch).
+  const int im = i == 0 ? h.width - 1 : i - 1, ip = i + 1 == h.width ? 0 : i + 1;
+  const int jm = j == 0 ? h.height - 1 : j - 1, jp = j + 1 == h.height ? 0 : j + 1;
   const float centre = h.at(i, j);
-  if (i > 0 && j > 0 && i + 1 < h.width && j + 1 < h.height) {
-    // Inside: no wrapping (the per-contact model scans every pixel of every patch).
-    const float* above = &h.values[static_cast<size_t>(j - 1) * h.width + i];
-    const float* row = above + h.width;
-    const float* below = row + h.width;
-    return above[-1] < centre && above[0] < centre && above[1] < centre && row[-1] < centre &&
-           row[1] <= centre && below[-1] <= centre && below[0] <= centre && below[1] <= centre;
-  }
-  for (int dj = -1; dj <= 1; ++dj) {
-    for (int di = -1; di <= 1; ++di) {
-      if (di == 0 && dj == 0) continue;
-      const float n = h.at(wrapIndex(i + di, h.width), wrapIndex(j + dj, h.height));
-      const bool before = dj < 0 || (dj == 0 && di < 0);
-      if (before ? n >= centre : n > centre) return false;
-    }
-  }
-  return true;
+  return h.at(im, jm) < centre && h.at(i, jm) < centre && h.at(ip, jm) < centre &&
+         h.at(im, j) < centre && h.at(ip, j) <= centre && h.at(im, jp) <= centre &&
+         h.at(i, jp) <= centre && h.at(ip, jp) <= centre;
 }
 
 // Mean curvature -(h_uu + h_vv) / 2 by second differences (1 / m).

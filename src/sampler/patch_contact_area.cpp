@@ -153,9 +153,10 @@ size_t gatherInContact(std::span<const uint32_t> in_patch, const float* gx, cons
 
 }  // namespace
 
-std::array<Mechanical, 2> mechanicalOf(const ContactAreaOptions& options, const Contact& contact,
-                                       const ShapeRange (&ranges)[2]) {
-  std::array<Mechanical, 2> pair;
+std::array<const Mechanical*, 2> mechanicalOf(const ContactAreaOptions& options,
+                                              const Contact& contact,
+                                              const ShapeRange (&ranges)[2]) {
+  std::array<const Mechanical*, 2> pair{};
   const int bodies[2] = {static_cast<int>(contact.body_a), static_cast<int>(contact.body_b)};
   for (size_t s = 0; s < 2; ++s) {
     const Mechanical* m = lookup(options, bodies[s], ranges[s].first);
@@ -164,18 +165,18 @@ std::array<Mechanical, 2> mechanicalOf(const ContactAreaOptions& options, const 
                   std::to_string(ranges[s].first) +
                   " has no mechanical values (E, nu, H, tau): give its surface a \"mechanical\" "
                   "preset or values");
-    pair[s] = *m;
+    pair[s] = m;
   }
   return pair;
 }
 
 int finishAreaContact(const Volume& volume, const std::array<SurfaceRaster, 2>& rasters,
                       std::span<const uint32_t> in_patch, const float* gx, const float* gy,
-                      const std::array<Mechanical, 2>& pair, const AreaInputs& in,
+                      const std::array<const Mechanical*, 2>& pair, const AreaInputs& in,
                       Contact& contact, AreaScratch& s) {
   const size_t count = in_patch.size();
   const double apparent = static_cast<double>(count) * volume.pixel * volume.pixel;
-  const ContactMaterial material = contactPair(pair[0], pair[1]);
+  const ContactMaterial material = contactPair(*pair[0], *pair[1]);
   // The load: last step's normal impulse over the step; a new contact (none yet) is taken at
   // a light load, 1e-4 of what would flatten the patch, where A_r is still proportional to W.
   const double stiff = material.hardness > 0.0 ? material.hardness : material.modulus;
@@ -196,7 +197,7 @@ int finishAreaContact(const Volume& volume, const std::array<SurfaceRaster, 2>& 
   const size_t touching = count > 0 ? gatherInContact(in_patch, gx, gy, s) : 0;
   // Adhesion, capped as the ploughing term is (a flat pair is in full contact at any load).
   PatchGains gains = in.gains;
-  gains.mu0 = std::min(pairShear(pair[0], pair[1]) * real_area / load, in.mu_max);
+  gains.mu0 = std::min(pairShear(*pair[0], *pair[1]) * real_area / load, in.mu_max);
   std::array<std::array<double, kMaxDirections>, 2> sums{};
   const size_t n = in.directions.size();
   for (size_t k = 0; k < 2 && touching > 0; ++k) {

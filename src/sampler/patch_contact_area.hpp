@@ -55,16 +55,18 @@ struct AreaInputs {
   SimdCopy simd = SimdCopy::Auto;
 };
 
-// The pair's mechanical values for this contact: the preset of each side's first shape in
-// options.mechanical. Throws asperity::Error naming the body and shape without one.
-std::array<Mechanical, 2> mechanicalOf(const ContactAreaOptions& options, const Contact& contact,
-                                       const ShapeRange (&ranges)[2]);
+// The pair's mechanical values for this contact: those of each side's first shape in
+// options.mechanical (pointers into it). Throws asperity::Error naming the body and shape
+// without any.
+std::array<const Mechanical*, 2> mechanicalOf(const ContactAreaOptions& options,
+                                              const Contact& contact,
+                                              const ShapeRange (&ranges)[2]);
 
 // Fills contact.mu from the rasters, P (`in_patch`, Volume::pack) and the ploughing vectors
 // of P's pixels (gx, gy: A's count then B's). Returns the pixels in contact.
 int finishAreaContact(const Volume& volume, const std::array<SurfaceRaster, 2>& rasters,
                       std::span<const uint32_t> in_patch, const float* gx, const float* gy,
-                      const std::array<Mechanical, 2>& pair, const AreaInputs& in,
+                      const std::array<const Mechanical*, 2>& pair, const AreaInputs& in,
                       Contact& contact, AreaScratch& scratch);
 
 }  // namespace asperity::patch
