@@ -58,29 +58,31 @@ TEST(ContactAreaScene, ReadsTheModelAndTheMechanicalValuesAndWritesThemBack) {
   EXPECT_EQ(parseScene(nlohmann::json::object(), "e.json").friction_model, FrictionModel::Paper);
 }
 
-// The box slows down under the area model's friction at a rate that its contacts' mu explains,
+// The box slows down under the area model's friction at the rate its contacts' mu gives,
 // the same bits on one thread or two.
 TEST(ContactAreaScene, BoxSlowsTheSameOnOneThreadOrTwo) {
   const auto one = instantiate(parseScene(sceneJson(1), "s.json"));
   const auto two = instantiate(parseScene(sceneJson(2), "s.json"));
-  double mu = 0.0;
+  // The friction the box feels: its contacts' mu against the motion weighted by their normal
+  // impulses, over the steps (few summits touch, so mu varies from contact to contact).
+  double friction = 0.0, normal = 0.0;
   for (int i = 0; i < 10; ++i) {
     one->step();
     two->step();
-    if (i == 5) {
-      ASSERT_FALSE(one->contacts().empty());
-      for (const Contact& c : one->contacts())
-        mu += c.mu.mu[2] / static_cast<double>(one->contacts().size());
+    for (const Contact& c : one->contacts()) {
+      friction += c.mu.mu[2] * c.lambda_n;
+      normal += c.lambda_n;
     }
   }
+  ASSERT_GT(normal, 0.0);
+  const double mu = friction / normal;
   EXPECT_EQ(one->stateHash(), two->stateHash());
-  // Sliding along +x, t = +x: the friction on the box acts along -x, direction 2 of 4 (the
-  // mean over the corners).
+  // Sliding along +x, t = +x: the friction on the box acts along -x, direction 2 of 4.
   const double slowed = (1.0 - one->bodies()[1].linear_velocity.x()) / (0.1 * 9.81);
   std::printf("contact-area box: mu %.3f, deceleration / g %.3f\n", mu, slowed);
   EXPECT_GT(mu, 0.05);
   EXPECT_LT(mu, 2.0);
-  EXPECT_NEAR(slowed, mu, 0.25 * mu);
+  EXPECT_NEAR(slowed, mu, 0.15 * mu);
 }
 
 TEST(ContactAreaScene, BadInputIsAClearError) {
