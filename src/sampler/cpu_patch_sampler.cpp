@@ -83,6 +83,7 @@ void CpuPatchSampler::State::reserveLike(const State& other) {
   in_patch.reserve(other.in_patch.capacity());
   gx.reserve(other.gx.capacity());
   gy.reserve(other.gy.capacity());
+  area_scratch.reserveLike(other.area_scratch);
   for (size_t s = 0; s < 2; ++s) {
     patch::SurfaceRaster& r = raster[s];
     const patch::SurfaceRaster& o = other.raster[s];

@@ -43,6 +43,16 @@ struct AreaScratch {
   SummitSet summits;
   std::vector<unsigned char> mask;
   std::vector<float> gx, gy;  // ploughing vectors of the pixels in contact, A then B
+
+  // Every buffer at least as large as other's (CpuPatchSampler::State::reserveLike).
+  void reserveLike(const AreaScratch& other) {
+    composite.values.reserve(other.composite.values.capacity());
+    summits.summits.reserve(other.summits.summits.capacity());
+    summits.surface.values.reserve(other.summits.surface.values.capacity());
+    mask.reserve(other.mask.capacity());
+    gx.reserve(other.gx.capacity());
+    gy.reserve(other.gy.capacity());
+  }
 };
 
 // What the model needs besides the rasters.
