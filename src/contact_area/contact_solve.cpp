@@ -100,9 +100,16 @@ ContactArea solveContact(const SummitSet& set, const ContactMaterial& material, 
 }
 
 std::vector<unsigned char> contactMask(const SummitSet& set, const ContactArea& result) {
+  std::vector<unsigned char> mask;
+  contactMaskInto(set, result, mask);
+  return mask;
+}
+
+void contactMaskInto(const SummitSet& set, const ContactArea& result,
+                     std::vector<unsigned char>& mask) {
   const auto count = static_cast<size_t>(set.width) * static_cast<size_t>(set.height);
-  std::vector<unsigned char> mask(count, result.fraction >= 1.0 ? 1 : 0);
-  if (result.fraction >= 1.0 || result.load == 0.0) return mask;
+  mask.assign(count, result.fraction >= 1.0 ? 1 : 0);
+  if (result.fraction >= 1.0 || result.load == 0.0) return;
   for (const Summit& s : set.summits) {
     const double delta = s.height - result.separation;
     if (delta <= 0.0) break;
@@ -118,7 +125,6 @@ std::vector<unsigned char> contactMask(const SummitSet& set, const ContactArea& 
       }
     }
   }
-  return mask;
 }
 
 }  // namespace asperity

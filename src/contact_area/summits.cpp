@@ -14,7 +14,7 @@ int wrapIndex(int index, int size) {
   return m < 0 ? m + size : m;
 }
 
-// B's heights plus A's on B's grid (A resampled bilinearly when its size differs), mean zero.
+// B's heights plus A's on B's grid (A resampled bilinearly when its size differs).
 HeightMap composite(const HeightMap& b, const HeightMap* a) {
   HeightMap sum = b;
   if (a != nullptr && !a->empty()) {
@@ -27,26 +27,28 @@ HeightMap composite(const HeightMap& b, const HeightMap* a) {
       }
     }
   }
-  double mean = 0.0;
-  for (float h : sum.values) mean += h;
-  mean /= static_cast<double>(sum.values.size());
-  for (float& h : sum.values) h = static_cast<float>(h - mean);
   return sum;
+}
+
+// Mean zero: the separation is measured from the mean composite height.
+void removeMean(HeightMap& h) {
+  double mean = 0.0;
+  for (float v : h.values) mean += v;
+  mean /= static_cast<double>(h.values.size());
+  for (float& v : h.values) v = static_cast<float>(v - mean);
 }
 
 // A summit is higher than the neighbours before it in row order and not lower than those
 // after it, so a plateau of equal texels gives one summit, not none or several.
 bool isSummit(const HeightMap& h, int i, int j) {
+  // Wrapped neighbour rows and columns without a division (the per-contact model scans every
+  // pixel of every patch).
+  const int im = i == 0 ? h.width - 1 : i - 1, ip = i + 1 == h.width ? 0 : i + 1;
+  const int jm = j == 0 ? h.height - 1 : j - 1, jp = j + 1 == h.height ? 0 : j + 1;
   const float centre = h.at(i, j);
-  for (int dj = -1; dj <= 1; ++dj) {
-    for (int di = -1; di <= 1; ++di) {
-      if (di == 0 && dj == 0) continue;
-      const float n = h.at(wrapIndex(i + di, h.width), wrapIndex(j + dj, h.height));
-      const bool before = dj < 0 || (dj == 0 && di < 0);
-      if (before ? n >= centre : n > centre) return false;
-    }
-  }
-  return true;
+  return h.at(im, jm) < centre && h.at(i, jm) < centre && h.at(ip, jm) < centre &&
+         h.at(im, j) < centre && h.at(ip, j) <= centre && h.at(im, jp) <= centre &&
+         h.at(i, jp) <= centre && h.at(ip, jp) <= centre;
 }
 
 // Mean curvature -(h_uu + h_vv) / 2 by second differences (1 / m).
@@ -78,20 +80,29 @@ void summarise(SummitSet& set) {
 
 SummitSet findSummits(const HeightMap& b, const HeightMap* a, double texture_size) {
   if (b.empty()) throw Error("contact area: empty height map");
+  SummitSet set;
+  findSummitsInto(composite(b, a), texture_size, set);
+  return set;
+}
+
+void findSummitsInto(const HeightMap& heights, double texture_size, SummitSet& set) {
+  if (heights.empty()) throw Error("contact area: empty height map");
   if (!(texture_size > 0.0) || !std::isfinite(texture_size))
     throw Error("contact area: texture size must be a positive number of metres");
-  HeightMap h = composite(b, a);
-  SummitSet set;
+  HeightMap& h = set.surface;
+  h.width = heights.width;
+  h.height = heights.height;
+  h.values.assign(heights.values.begin(), heights.values.end());
+  removeMean(h);
+  set.summits.clear();
   set.width = h.width;
   set.height = h.height;
   set.texel = texture_size / h.width;
   set.apparent_area = texture_size * (texture_size * h.height / h.width);
+  set.sigma = set.beta = 0.0;
   const auto [lo, hi] = std::minmax_element(h.values.begin(), h.values.end());
   set.flat = *hi - *lo == 0.0f;
-  if (set.flat) {
-    set.surface = std::move(h);
-    return set;
-  }
+  if (set.flat) return;
   for (int j = 0; j < h.height; ++j) {
     for (int i = 0; i < h.width; ++i) {
       if (!isSummit(h, i, j)) continue;
@@ -104,8 +115,6 @@ SummitSet findSummits(const HeightMap& b, const HeightMap* a, double texture_siz
   std::sort(set.summits.begin(), set.summits.end(),
             [](const Summit& x, const Summit& y) { return x.height > y.height; });
   summarise(set);
-  set.surface = std::move(h);
-  return set;
 }
 
 }  // namespace asperity

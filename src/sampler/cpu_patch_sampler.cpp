@@ -10,6 +10,7 @@
 #include "asperity/friction/fragment_model.hpp"
 #include "parallel/thread_pool.hpp"
 #include "sampler/patch_common.hpp"
+#include "sampler/patch_contact_area.hpp"
 #include "sampler/patch_geometry.hpp"
 #include "sampler/patch_reuse.hpp"
 #include "sampler/patch_shade.hpp"
@@ -42,9 +43,14 @@ double msBetween(Clock::time_point a, Clock::time_point b) {
 
 // Scratch kept between calls: rasters, fragment arrays, sample directions.
 struct CpuPatchSampler::State {
-  State(patch::MeshCache& shared, SimdCopy copy) : meshes(shared), simd(copy) {}
+  State(patch::MeshCache& shared, SimdCopy copy, const ContactAreaOptions& area_options,
+        const patch::HeightCache& height_cache)
+      : meshes(shared), simd(copy), area(area_options), heights(height_cache) {}
   patch::MeshCache& meshes;  // the sampler's, shared by every thread's state
   SimdCopy simd;             // the sampler's option, for every loop this state runs
+  const ContactAreaOptions& area;      // the sampler's option
+  const patch::HeightCache& heights;   // the sampler's, shared (read only while sampling)
+  patch::AreaScratch area_scratch;
   patch::GeometryScratch geometry;
   std::array<patch::SurfaceRaster, 2> raster;  // A, B
   std::vector<uint32_t> in_patch;              // P as Volume::pack(i, j)
@@ -60,6 +66,11 @@ struct CpuPatchSampler::State {
                                             const FrictionSettings& settings, PatchImages* images);
   void fillImages(const patch::Volume& volume, const FrictionSettings& settings,
                   PatchImages& images);
+  // Eq. 8 and 7 over P (the paper's model), or the contact-area model (SPEC 13).
+  void finishPaper(const patch::ShapeRange (&ranges)[2], Contact& contact,
+                   const FrictionSettings& settings, size_t count);
+  void finishWithArea(const patch::Volume& volume, const patch::ShapeRange (&ranges)[2],
+                      Contact& contact, const FrictionSettings& settings);
   void reserveLike(const State& other);
 };
 
@@ -72,6 +83,7 @@ void CpuPatchSampler::State::reserveLike(const State& other) {
   in_patch.reserve(other.in_patch.capacity());
   gx.reserve(other.gx.capacity());
   gy.reserve(other.gy.capacity());
+  area_scratch.reserveLike(other.area_scratch);
   for (size_t s = 0; s < 2; ++s) {
     patch::SurfaceRaster& r = raster[s];
     const patch::SurfaceRaster& o = other.raster[s];
@@ -173,12 +185,26 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   // Rasterise both surfaces and find P, then shade P into ploughing vectors (A, then B).
   rasterise(volume, ranges, images != nullptr);
   const size_t count = in_patch.size();
-  const size_t n = directions.size();
   for (size_t s = 0; s < 2 && count > 0; ++s) {
     patch::shadePloughing(volume, raster[s], in_patch, settings.mu_max, gx.data() + s * count,
                           gy.data() + s * count);
   }
   const Clock::time_point t1 = Clock::now();
+  if (area.model == FrictionModel::ContactArea) {
+    finishWithArea(volume, ranges, contact, settings);
+  } else {
+    finishPaper(ranges, contact, settings, count);
+  }
+  const Clock::time_point t2 = Clock::now();
+  if (images != nullptr) fillImages(volume, settings, *images);
+  patch_ms += msBetween(t0, t1);
+  averaging_ms += msBetween(t1, t2);
+  return {raster[0].depth, raster[1].depth};
+}
+
+void CpuPatchSampler::State::finishPaper(const patch::ShapeRange (&ranges)[2], Contact& contact,
+                                         const FrictionSettings& settings, size_t count) {
+  const size_t n = directions.size();
   // Eq. 8 sums through the friction module's kernel.
   for (size_t s = 0; s < 2; ++s) {
     std::fill(sums[s].begin(), sums[s].begin() + static_cast<long>(n), 0.0);
@@ -191,18 +217,29 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   patch::finishContact(contact, std::span<const double>(sums[0].data(), n),
                        std::span<const double>(sums[1].data(), n), static_cast<int>(count),
                        patch::gainsOf(ranges[0], ranges[1], settings.mu0));
-  const Clock::time_point t2 = Clock::now();
-  if (images != nullptr) fillImages(volume, settings, *images);
-  patch_ms += msBetween(t0, t1);
-  averaging_ms += msBetween(t1, t2);
-  return {raster[0].depth, raster[1].depth};
+}
+
+void CpuPatchSampler::State::finishWithArea(const patch::Volume& volume,
+                                            const patch::ShapeRange (&ranges)[2],
+                                            Contact& contact, const FrictionSettings& settings) {
+  patch::AreaInputs in;
+  in.options = &area;
+  in.heights = &heights;
+  in.directions = directions;
+  in.gains = patch::gainsOf(ranges[0], ranges[1], settings.mu0);
+  in.mu_max = settings.mu_max;
+  in.simd = simd;
+  patch::finishAreaContact(volume, raster, in_patch, gx.data(), gy.data(),
+                           patch::mechanicalOf(area, contact, ranges), in, contact, area_scratch);
 }
 
 CpuPatchSampler::CpuPatchSampler(const CpuSamplerOptions& options)
     : options_(options),
       meshes_(std::make_unique<patch::MeshCache>()),
-      state_(std::make_unique<State>(*meshes_, options.simd)),
-      reuse_(std::make_unique<patch::PatchReuse>()) {}
+      reuse_(std::make_unique<patch::PatchReuse>()),
+      heights_(std::make_unique<patch::HeightCache>()) {
+  state_ = std::make_unique<State>(*meshes_, options.simd, options_.contact_area, *heights_);
+}
 
 void CpuPatchSampler::forgetHistory() {
   reuse_ = std::make_unique<patch::PatchReuse>();
@@ -220,6 +257,7 @@ CpuPatchSampler::~CpuPatchSampler() = default;
 void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& contact,
                                     const FrictionSettings& settings, PatchImages* images) {
   validatePatchSettings(settings, "cpu sampler");
+  if (options_.contact_area.model == FrictionModel::ContactArea) heights_->prepare(bodies, contact);
   state_->sample(bodies, contact, settings, images);
 }
 
@@ -229,6 +267,11 @@ void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::spa
   // Contacts whose earlier sample still holds keep it; the others are sampled.
   reuse_->reuse(bodies, contacts, settings, reused_);
   reused_count_ = static_cast<int>(std::count(reused_.begin(), reused_.end(), uint8_t{1}));
+  // The contact-area model's heights are made here, on the calling thread, for all threads.
+  if (options_.contact_area.model == FrictionModel::ContactArea) {
+    for (size_t i = 0; i < contacts.size(); ++i)
+      if (!reused_[i]) heights_->prepare(bodies, contacts[i]);
+  }
   if (!pool_ || pool_->concurrency() == 1) {
     // One contact after the other; scratch is reused.
     State& st = *state_;
@@ -250,7 +293,8 @@ void CpuPatchSampler::sampleOnPool(std::span<const Body> bodies, std::span<Conta
   for (size_t i = 0; i < contacts.size(); ++i)
     if (!reused_[i]) patch::prepareMeshes(*meshes_, bodies, contacts[i], false);
   while (worker_states_.size() < static_cast<size_t>(pool_->concurrency()))
-    worker_states_.push_back(std::make_unique<State>(*meshes_, options_.simd));
+    worker_states_.push_back(
+        std::make_unique<State>(*meshes_, options_.simd, options_.contact_area, *heights_));
   for (auto& st : worker_states_) st->patch_ms = st->averaging_ms = 0.0;
   // Each contact is sampled alone (it writes only itself), with the scratch of the thread
   // that runs it: the coefficients are the same whichever thread that is.

@@ -258,14 +258,53 @@ BodyDesc parseBody(JsonReader r, SceneDesc& scene, size_t index) {
 
 }  // namespace
 
+namespace {
+
+// "mechanical": a preset's name, or {"E": Pa, "nu": 1, "H": Pa (0 = no plastic limit),
+// "tau": Pa}. Absent: none.
+std::optional<Mechanical> parseMechanical(JsonReader& r, const std::string& key) {
+  if (!r.has(key)) return std::nullopt;
+  const nlohmann::json& v = r.value().at(key);
+  if (v.is_string()) {
+    const std::string name = r.string(key, "");
+    for (const Mechanical& p : mechanicalPresets())
+      if (p.name == name) return p;
+    std::string known;
+    for (const Mechanical& p : mechanicalPresets()) known += (known.empty() ? "" : ", ") + p.name;
+    r.failAt(key, "unknown mechanical preset \"" + name + "\" (known: " + known + ")");
+  }
+  if (!v.is_object())
+    r.failAt(key, "must be a preset name or {\"E\", \"nu\", \"H\", \"tau\"}, got " +
+                      describeValue(v));
+  JsonReader o = r.object(key);
+  constexpr double kPascals = 1e13;  // above any solid's modulus (diamond: 1.2e12 Pa)
+  Mechanical m;
+  m.name = "custom";
+  m.modulus = o.requiredNumber("E", Range::positive(kPascals));
+  m.poisson = o.requiredNumber("nu", Range::closed(0.0, 0.5));
+  m.hardness = o.number("H", 0.0, Range::nonNegative(kPascals));
+  m.shear = o.requiredNumber("tau", Range::positive(kPascals));
+  o.finish();
+  return m;
+}
+
+}  // namespace
+
 void parseMaterials(JsonReader& root, SceneDesc& scene) {
   JsonReader table = root.object("materials");
   for (const auto& entry : table.value().items()) {
     const std::string& name = entry.key();
     if (name.empty()) table.failAt(name, "a material needs a non-empty name");
     // Each entry is a surface object; the shapes that name it keep the name for saving.
-    const JsonReader surface = table.object(name);
+    JsonReader entry_reader = table.object(name);
     SceneMaterial& m = scene.materials[name];
+    m.mechanical = parseMechanical(entry_reader, "mechanical");
+    // The rest of the entry is a surface.
+    nlohmann::json rest = entry_reader.value();
+    rest.erase("mechanical");
+    const JsonReader surface = m.mechanical
+                                   ? JsonReader(rest, entry_reader.file(), entry_reader.pointer())
+                                   : entry_reader;
     m.names_base_color = surface.value().contains("base_color");
     m.surface = parseSurface(surface, scene.base_dir);
     m.surface.source.material = name;

@@ -167,7 +167,19 @@ json settingsToJson(const SceneDesc& scene) {
           {"patch_width", f.patch_width},
           {"patch_resolution", f.patch_resolution},
           {"reuse_pixels", f.reuse_pixels},
-          {"friction_provider", scene.friction_provider}};
+          {"friction_provider", scene.friction_provider},
+          {"friction_model", enumName(scene.friction_model,
+                                      EnumNames<FrictionModel>(kFrictionModelNames))}};
+}
+
+// A material's mechanical values: the preset's name while they equal it, else the numbers.
+json mechanicalToJson(const Mechanical& m) {
+  for (const Mechanical& p : mechanicalPresets()) {
+    if (p.name == m.name && p.modulus == m.modulus && p.poisson == m.poisson &&
+        p.hardness == m.hardness && p.shear == m.shear)
+      return m.name;
+  }
+  return {{"E", m.modulus}, {"nu", m.poisson}, {"H", m.hardness}, {"tau", m.shear}};
 }
 
 // "materials": each entry as a surface, its base colour only when it gave one.
@@ -176,6 +188,7 @@ json materialsToJson(const SceneDesc& scene) {
   for (const auto& [name, material] : scene.materials) {
     out[name] = surfaceToJson(material.surface);
     if (!material.names_base_color) out[name].erase("base_color");
+    if (material.mechanical) out[name]["mechanical"] = mechanicalToJson(*material.mechanical);
   }
   return out;
 }

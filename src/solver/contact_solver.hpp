@@ -96,6 +96,10 @@ class ContactSolver {
   // Writes velocities and impulses back and remembers them for the next step's warm start.
   void finish(std::span<Body> bodies, std::span<Contact> contacts);
 
+  // Each contact's normal impulse of the last step, as its warm start finds it (0 for a new
+  // contact), into its lambda_n before this step's friction: the load of the contact-area
+  // friction model (docs/contact-area.md). The solve overwrites it.
+  void previousNormalImpulses(std::span<Contact> contacts) const;
   // Forgets the impulses kept for warm starting (contacts and joints), as in a new solver.
   void forgetWarmStart();
   // The kept impulses (contacts by key, joints), saved and restored bit for bit

@@ -38,6 +38,10 @@ struct SummitSet {
 // texture_size that is not positive.
 SummitSet findSummits(const HeightMap& b, const HeightMap* a, double texture_size);
 
+// The same for heights already summed (`composite`, any mean), into `set`, whose buffers are
+// reused: nothing is allocated once they are large enough, as a per-contact model needs.
+void findSummitsInto(const HeightMap& composite, double texture_size, SummitSet& set);
+
 struct ContactMaterial {
   double modulus = 0.0;   // E* (Pa), the pair's effective modulus
   double hardness = 0.0;  // H (Pa); 0 = no plastic limit
@@ -63,6 +67,9 @@ ContactArea solveContact(const SummitSet& set, const ContactMaterial& material, 
 // Which texels are in contact at `result` (each touching summit as a disc of its contact
 // radius sqrt(R delta)), rows bottom-up like HeightMap; 1 = contact.
 std::vector<unsigned char> contactMask(const SummitSet& set, const ContactArea& result);
+// The same into `mask` (resized; no allocation once large enough).
+void contactMaskInto(const SummitSet& set, const ContactArea& result,
+                     std::vector<unsigned char>& mask);
 
 // An 8-bit grey PNG of the contact maps of `results` side by side, one panel per result with a
 // black gap of four texels: the composite heights in dark greys, the texels in contact white.

@@ -13,9 +13,12 @@
 // Registered as "cpu" in the scene's friction provider registry.
 #pragma once
 
+#include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
+#include "asperity/contact_area/mechanical.hpp"
 #include "asperity/math/simd_copy.hpp"
 #include "asperity/sampler/friction_provider.hpp"
 #include "asperity/sampler/patch_sampler.hpp"
@@ -25,12 +28,30 @@ namespace asperity {
 namespace patch {
 class MeshCache;
 class PatchReuse;
+class HeightCache;
 }  // namespace patch
+
+// Which friction model the sampler evaluates: the paper's (Eq. 7 with mu0) or the real area
+// of contact (SPEC 13, docs/contact-area.md).
+enum class FrictionModel { Paper, ContactArea };
+inline constexpr std::pair<const char*, FrictionModel> kFrictionModelNames[] = {
+    {"paper", FrictionModel::Paper}, {"contact_area", FrictionModel::ContactArea}};
+
+// What the contact-area model needs beyond FrictionSettings.
+struct ContactAreaOptions {
+  FrictionModel model = FrictionModel::Paper;
+  // The world's step (s): the load W of a contact is its previous normal impulse over it.
+  double dt = 0.01;
+  // Each surface's mechanical values by (body index, shape index); shape index -1 stands for
+  // every shape of the body. A contact on a surface without any is an error under the model.
+  std::map<std::pair<int, int>, Mechanical> mechanical;
+};
 
 struct CpuSamplerOptions {
   // Which compiled copy of the rasterising, shading and summing loops runs (the same bits
   // either way; tests compare them).
   SimdCopy simd = SimdCopy::Auto;
+  ContactAreaOptions contact_area;
 };
 
 class CpuPatchSampler : public FrictionProvider {
@@ -67,6 +88,7 @@ class CpuPatchSampler : public FrictionProvider {
   std::unique_ptr<State> state_;                       // the calling thread's scratch
   std::vector<std::unique_ptr<State>> worker_states_;  // one per pool thread
   std::unique_ptr<patch::PatchReuse> reuse_;           // earlier samples (patch coherence)
+  std::unique_ptr<patch::HeightCache> heights_;        // contact-area model: surface heights
   std::vector<uint8_t> reused_;                        // this call's reuse decisions
   const ThreadPool* pool_ = nullptr;
   double patch_ms_ = 0.0;
