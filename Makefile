@@ -36,7 +36,7 @@ node-tools:
 	@scripts/install-node-tools.sh $(BUILD)/node-tools
 
 test: build node-tools
-	@cd $(BUILD) && ASPERITY_REQUIRE_NODE_TOOLS=1 ctest --output-on-failure -j$(JOBS) --timeout 600
+	@cd $(BUILD) && ASPERITY_REQUIRE_NODE_TOOLS=1 ASPERITY_REQUIRE_OPENEXR=1 ctest --output-on-failure -j$(JOBS) --timeout 600
 
 # One clang build with ASan + UBSan serves the test suite and the libFuzzer targets alike, so
 # the library is compiled once for both. Sanitizer reports abort the test that made them;

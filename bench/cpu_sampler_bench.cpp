@@ -20,9 +20,7 @@ namespace asperity {
 namespace {
 
 void run(benchmark::State& state, bench::SamplerScene& scene, int n,
-         PatchPath path = PatchPath::Raster) {
-  CpuSamplerOptions options;
-  options.path = path;
+         const CpuSamplerOptions& options = {}) {
   CpuPatchSampler sampler(options);
   FrictionSettings settings;
   settings.directions = n;
@@ -43,8 +41,9 @@ void run(benchmark::State& state, bench::SamplerScene& scene, int n,
 
 void BM_BoxOnPlane(benchmark::State& state) {
   bench::SamplerScene scene = bench::boxesOnPlane(static_cast<int>(state.range(1)));
-  run(state, scene, static_cast<int>(state.range(0)),
-      state.range(2) != 0 ? PatchPath::Planar : PatchPath::Raster);
+  CpuSamplerOptions options;
+  options.path = state.range(2) != 0 ? PatchPath::Planar : PatchPath::Raster;
+  run(state, scene, static_cast<int>(state.range(0)), options);
 }
 // planar 1: the planar path (tables built by the first call, outside the timing).
 BENCHMARK(BM_BoxOnPlane)
@@ -56,6 +55,26 @@ BENCHMARK(BM_BoxOnPlane)
     ->Args({4, 10, 0})
     ->Args({4, 100, 0})
     ->Args({4, 10000, 0});
+
+// The same boxes under the contact-area model (SPEC 13): the plane's and boxes' heights from
+// their generators, steel on oak, each contact loaded with 20 N (its previous impulse).
+void BM_BoxOnPlaneContactArea(benchmark::State& state) {
+  bench::SamplerScene scene = bench::boxesOnPlane(static_cast<int>(state.range(1)));
+  CpuSamplerOptions options;
+  options.contact_area.model = FrictionModel::ContactArea;
+  options.contact_area.dt = 0.01;
+  for (size_t i = 0; i < scene.bodies.size(); ++i) {
+    for (Shape& shape : scene.bodies[i].shapes) {
+      shape.surface.source.generator.name = i == 0 ? "stone" : "oak";
+      shape.surface.source.generator.size = 256;
+    }
+    options.contact_area.mechanical[{static_cast<int>(i), -1}] =
+        findMechanical(i == 0 ? "steel" : "oak");
+  }
+  for (Contact& c : scene.contacts) c.lambda_n = 20.0 * options.contact_area.dt;
+  run(state, scene, static_cast<int>(state.range(0)), options);
+}
+BENCHMARK(BM_BoxOnPlaneContactArea)->ArgNames({"N", "contacts"})->Args({4, 1000})->Args({16, 1000});
 
 // The bunny through the project's OBJ loader (0.1 scale, about 0.2 m), simplified to
 // `triangles` (0 keeps all 69 666, as the sampler sees an unsimplified scene mesh).

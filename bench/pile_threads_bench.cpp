@@ -19,43 +19,18 @@
 #include <string>
 #include <vector>
 
-#include "asperity/sampler/constant_provider.hpp"
-#include "asperity/world/builders.hpp"
-#include "asperity/world/world.hpp"
+#include "pile_world.hpp"
 
 namespace {
 
 using namespace asperity;
 using Clock = std::chrono::steady_clock;
 
-constexpr int kGrid = 10, kSettle = 300, kTimed = 200;
-constexpr double kEdge = 0.2, kGap = 0.05;
-
-std::vector<Vec3> gridCentres() {
-  std::vector<Vec3> centres;
-  const double pitch = kEdge + kGap, off = 0.5 * (kGrid - 1) * pitch;
-  for (int k = 0; k < kGrid; ++k)
-    for (int j = 0; j < kGrid; ++j)
-      for (int i = 0; i < kGrid; ++i)
-        centres.emplace_back(i * pitch - off, j * pitch - off, kGap + 0.5 * kEdge + k * pitch);
-  return centres;
-}
-
-std::unique_ptr<World> pileWorld(int threads) {
-  WorldSettings settings;
-  settings.limit_surface = LimitSurfaceKind::Coulomb;
-  settings.friction.mu0 = 0.5;
-  settings.threads = threads;
-  auto world = std::make_unique<World>(settings);
-  world->setFrictionProvider(std::make_unique<ConstantProvider>());
-  world->createBody(groundPlaneDesc());
-  const double density = 1.0 / (kEdge * kEdge * kEdge);  // 1 kg cubes
-  int index = 0;
-  for (const Vec3& c : gridCentres())
-    world->createBody(boxDesc("cube" + std::to_string(index++), Vec3::Constant(0.5 * kEdge),
-                              {c, Quat::Identity()}, density));
-  return world;
-}
+using bench::gridCentres;
+using bench::kEdge;
+using bench::kGrid;
+using bench::pileWorld;
+constexpr int kSettle = 300, kTimed = 200;
 
 // Columns whose top cube sits on top of its column (within 2 cm), as the peers count them.
 int intactColumns(const World& world, const std::vector<Vec3>& init) {

@@ -68,3 +68,13 @@ endif()
 if(ASPERITY_WITH_ODE)
   pkg_check_modules(ODE QUIET IMPORTED_TARGET ode)
 endif()
+
+# Float height maps in OpenEXR (docs/contact-area.md), read when Debian's libopenexr-dev is
+# found; scripts/install-deps.sh installs it, so CI has it, and ASPERITY_REQUIRE_OPENEXR makes
+# its absence an error there.
+if(ASPERITY_WITH_OPENEXR)
+  pkg_check_modules(OPENEXR QUIET OpenEXR)
+  if(ASPERITY_REQUIRE_OPENEXR AND NOT OPENEXR_FOUND)
+    message(FATAL_ERROR "ASPERITY_REQUIRE_OPENEXR: libopenexr-dev not found")
+  endif()
+endif()

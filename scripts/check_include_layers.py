@@ -24,6 +24,7 @@ LAYERS = [
     "parallel",
     "gl",
     "texture",
+    "contact_area",
     "geometry",
     "friction",
     "dynamics",

@@ -19,6 +19,8 @@ packages=(
   libcairo2-dev fonts-dejavu-core
   # the engine adapters (docs/engines.md): Asperity's friction inside MuJoCo 2.2 and ODE 0.16
   libmujoco-dev libode-dev
+  # float height maps (OpenEXR)
+  libopenexr-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # the assimp command, which writes the FBX and COLLADA files the asset tests read back

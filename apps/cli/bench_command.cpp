@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "asperity/error.hpp"
+#include "asperity/math/atomic_file.hpp"
 #include "cli_common.hpp"
 #include "experiments/experiment_outcomes.hpp"
 
@@ -149,10 +150,11 @@ void runBench(const BenchOptions& opt) {
   if (opt.json.empty()) return;
   nlohmann::ordered_json j = nlohmann::ordered_json::array();
   for (const TableRow& r : rows) j.push_back(rowJson(r));
-  std::ofstream out(opt.json);
-  if (!out) throw Error("--json: cannot open \"" + opt.json + "\" for writing");
-  out << j.dump(2) << "\n";
-  if (!out) throw Error("--json: write to \"" + opt.json + "\" failed");
+  try {
+    writeFileAtomically(opt.json, j.dump(2) + "\n");
+  } catch (const Error& e) {
+    throw Error(std::string("--json ") + e.what());
+  }
 }
 
 }  // namespace

@@ -25,6 +25,7 @@ void registerAllCommands(CLI::App& app) {
   registerRenderCommand(app);
   registerBenchCommand(app);
   registerReportCommand(app);
+  registerContactAreaCommand(app);
 }
 
 void printError(const std::string& message) {

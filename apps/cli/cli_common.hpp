@@ -29,6 +29,7 @@ void registerPatchCommand(CLI::App& app);
 void registerRenderCommand(CLI::App& app);
 void registerBenchCommand(CLI::App& app);
 void registerReportCommand(CLI::App& app);
+void registerContactAreaCommand(CLI::App& app);
 
 // Every subcommand, in the order `asperity --help` lists them (the tool and its fuzz target).
 void registerAllCommands(CLI::App& app);

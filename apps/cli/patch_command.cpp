@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "asperity/error.hpp"
+#include "asperity/math/atomic_file.hpp"
 #include "asperity/sampler/cpu_patch_sampler.hpp"
 #include "asperity/scene/scene.hpp"
 #include "asperity/world/world.hpp"
@@ -134,11 +135,14 @@ void drawFigure(const PatchImages& im, const Contact& c, float mu_max, const std
   drawPanels(cr, im, layout, mu_max);
   drawCoefficients(cr, c, layout, mu_max);
   cairo_destroy(cr);
-  const cairo_status_t status = cairo_surface_write_to_png(surface, out.c_str());
+  // Under a temporary name, renamed once whole (asperity/math/atomic_file.hpp).
+  AtomicOutput output(out);
+  const cairo_status_t status = cairo_surface_write_to_png(surface, output.temporaryPath().c_str());
   cairo_surface_destroy(surface);
   if (status != CAIRO_STATUS_SUCCESS) {
     throw Error("patch: cannot write " + out + ": " + cairo_status_to_string(status));
   }
+  output.commit();
 }
 
 void runPatch(const PatchOptions& opt) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "asperity/error.hpp"
+#include "asperity/math/atomic_file.hpp"
 
 namespace asperity::cli::plot {
 namespace {
@@ -276,7 +277,9 @@ void drawLegendEntry(cairo_t* cr, double x, double y, const CurveStyle& style,
 
 void writeFigure(const std::string& path, bool svg, int width, int height,
                  const std::function<void(cairo_t*)>& draw) {
-  SurfacePtr surface(svg ? cairo_svg_surface_create(path.c_str(), width, height)
+  // Written under a temporary name and renamed once whole (asperity/math/atomic_file.hpp).
+  AtomicOutput output(path);
+  SurfacePtr surface(svg ? cairo_svg_surface_create(output.temporaryPath().c_str(), width, height)
                          : cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height),
                      &cairo_surface_destroy);
   const char* kind = svg ? "SVG" : "PNG";
@@ -294,9 +297,13 @@ void writeFigure(const std::string& path, bool svg, int width, int height,
     draw(cr.get());
   }
   // An SVG is written as it is finished; a PNG from the finished drawing.
-  if (!svg) return check(cairo_surface_write_to_png(surface.get(), path.c_str()));
-  cairo_surface_finish(surface.get());
-  check(cairo_surface_status(surface.get()));
+  if (!svg) {
+    check(cairo_surface_write_to_png(surface.get(), output.temporaryPath().c_str()));
+  } else {
+    cairo_surface_finish(surface.get());
+    check(cairo_surface_status(surface.get()));
+  }
+  output.commit();
 }
 
 }  // namespace asperity::cli::plot

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "asperity/error.hpp"
+#include "asperity/math/atomic_file.hpp"
 #include "cli_common.hpp"
 #include "experiments/experiment_outcomes.hpp"
 #include "report_plot.hpp"
@@ -223,10 +224,11 @@ void writeReport(const ReportOptions& opt) {
       "paper's figures (GTX 1650, i9 2.4 GHz) in parentheses.</p>" +
       tableOne(list, outcomes) + "</section></main></body></html>\n";
   const fs::path index = dir / "index.html";
-  std::ofstream file(index);
-  if (!file) throw Error("report: cannot open \"" + index.string() + "\" for writing");
-  file << html;
-  if (!file) throw Error("report: write to \"" + index.string() + "\" failed");
+  try {
+    writeFileAtomically(index.string(), html);
+  } catch (const Error& e) {
+    throw Error(std::string("report: ") + e.what());
+  }
   std::printf("%s: %d of %zu experiments reproduced\n", index.string().c_str(), passed,
               list.size());
 }

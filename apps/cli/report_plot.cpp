@@ -1,4 +1,4 @@
-// Inline SVG line plots for the experiment report.
+// Inline SVG line plots (and dot maps) for the experiment report.
 #include "report_plot.hpp"
 
 #include <algorithm>
@@ -128,14 +128,26 @@ std::string svgPlot(const experiments::Plot& plot, int width, int height) {
       if (!std::isfinite(ser.x[k]) || !std::isfinite(ser.y[k])) continue;
       const double px = x0 + (ser.x[k] - rx.lo) / (rx.hi - rx.lo) * w;
       const double py = y0 + h - (ser.y[k] - ry.lo) / (ry.hi - ry.lo) * h;
-      points += fmt("%.1f", px) + "," + fmt("%.1f", py) + " ";
+      if (ser.dots) {
+        s += "<circle cx='" + fmt("%.1f", px) + "' cy='" + fmt("%.1f", py) + "' r='5' fill='" +
+             colour + "'/>";
+      } else {
+        points += fmt("%.1f", px) + "," + fmt("%.1f", py) + " ";
+      }
     }
-    s += "<polyline fill='none' stroke='" + std::string(colour) + "' stroke-width='2' points='" +
-         points + "'/>";
+    if (!ser.dots) {
+      s += "<polyline fill='none' stroke='" + std::string(colour) + "' stroke-width='2' points='" +
+           points + "'/>";
+    }
     const double ly = y0 + 8 + 20.0 * static_cast<double>(i);
-    s += "<line x1='" + fmt("%.1f", x0 + w + 12) + "' x2='" + fmt("%.1f", x0 + w + 32) + "' y1='" +
-         fmt("%.1f", ly) + "' y2='" + fmt("%.1f", ly) + "' stroke='" + colour +
-         "' stroke-width='3'/>";
+    if (ser.dots) {
+      s += "<circle cx='" + fmt("%.1f", x0 + w + 22) + "' cy='" + fmt("%.1f", ly) +
+           "' r='5' fill='" + colour + "'/>";
+    } else {
+      s += "<line x1='" + fmt("%.1f", x0 + w + 12) + "' x2='" + fmt("%.1f", x0 + w + 32) +
+           "' y1='" + fmt("%.1f", ly) + "' y2='" + fmt("%.1f", ly) + "' stroke='" + colour +
+           "' stroke-width='3'/>";
+    }
     s += "<text x='" + fmt("%.1f", x0 + w + 38) + "' y='" + fmt("%.1f", ly + 4) + "'>" +
          htmlEscape(ser.label) + "</text>";
   }

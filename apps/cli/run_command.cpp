@@ -7,7 +7,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -15,9 +14,11 @@
 #include <optional>
 
 #include "asperity/error.hpp"
+#include "asperity/math/atomic_file.hpp"
 #include "asperity/scene/scene.hpp"
 #include "asperity/world/run_loop.hpp"
 #include "asperity/world/state_check.hpp"
+#include "asperity/world/state_file.hpp"
 #include "cli_common.hpp"
 
 namespace asperity::cli {
@@ -38,6 +39,9 @@ struct RunOptions {
   std::optional<int> patch_resolution;  // R
   std::optional<int> threads;           // worker threads of a step (0 = every core)
   bool hash = false;
+  std::string save_state;                       // checkpoint written at the end (and periodically)
+  std::string load_state;                       // checkpoint the run continues from
+  std::optional<double> checkpoint_every;       // s of simulated time between checkpoints
 };
 
 // The names an enumeration's table gives, for CLI11's check.
@@ -170,12 +174,67 @@ int64_t stepCount(const RunOptions& opt, double dt) {
   return stepsFor(opt.seconds ? *opt.seconds : 1.0, dt, "--seconds");
 }
 
-void writeFile(const std::string& path, const std::string& text, const char* what) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw Error(std::string(what) + ": cannot open \"" + path + "\" for writing");
-  out << text;
-  if (!out) throw Error(std::string(what) + ": write to \"" + path + "\" failed");
+// An output file's error, named by its option: "--out /dev/full: write failed: ...".
+template <typename F>
+void writing(const char* option, F&& write) {
+  try {
+    write();
+  } catch (const Error& e) {
+    throw Error(std::string(option) + " " + e.what());
+  }
 }
+
+// The trajectory, written as the run goes: each recorded step's rows with one write(2), so a
+// killed run leaves a CSV of whole rows up to the last step it recorded.
+class Trajectory {
+ public:
+  explicit Trajectory(const RunOptions& opt) : every_(opt.every) {
+    if (opt.out.empty()) return;
+    writing("--out", [&] { file_ = std::make_unique<RecordFile>(opt.out); });
+    rows_ = "step,time,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n";
+  }
+  // Steps are counted by the world, so a run continued from a checkpoint records the steps
+  // and rows that one uninterrupted run would.
+  void record(const World& world, bool always) {
+    if (!file_ || (!always && world.stepCount() % every_ != 0)) return;
+    appendRows(rows_, world, world.stepCount());
+    writing("--out", [&] { file_->append(rows_); });
+    rows_.clear();
+  }
+  void finish() {
+    if (file_) writing("--out", [&] { file_->sync(); });
+  }
+
+ private:
+  int64_t every_;
+  std::unique_ptr<RecordFile> file_;
+  std::string rows_;
+};
+
+// Checkpoints: --save-state at the end and, with --checkpoint-every, each time that much
+// simulated time has passed since the run began (each written atomically).
+class Checkpoints {
+ public:
+  Checkpoints(const RunOptions& opt, const SceneDesc& scene)
+      : path_(opt.save_state),
+        scene_id_(opt.save_state.empty() && opt.load_state.empty() ? 0 : sceneStateId(scene)) {
+    if (opt.checkpoint_every) period_ = std::max<int64_t>(1, stepsFor(*opt.checkpoint_every,
+                                                                      scene.settings.dt,
+                                                                      "--checkpoint-every"));
+  }
+  void load(World& world, const std::string& path) const { loadStateFile(world, path, scene_id_); }
+  void after(const World& world, int64_t step) const {
+    if (period_ > 0 && step % period_ == 0) save(world);
+  }
+  void save(const World& world) const {
+    if (!path_.empty()) writing("--save-state", [&] { saveStateFile(world, path_, scene_id_); });
+  }
+
+ private:
+  std::string path_;
+  uint64_t scene_id_;
+  int64_t period_ = 0;
+};
 
 void runScene(const RunOptions& opt) {
   // Scenes and --sampler may name every sampler of the tool ("gl" included).
@@ -186,23 +245,29 @@ void runScene(const RunOptions& opt) {
   // Parameters that cannot be simulated stably are named before the run (it may still work).
   for (const std::string& warning : stabilityWarnings(*world))
     std::fprintf(stderr, "asperity: warning: %s: %s\n", opt.scene.c_str(), warning.c_str());
+  const Checkpoints checkpoints(opt, scene);
+  if (!opt.load_state.empty()) checkpoints.load(*world, opt.load_state);
   const int64_t steps = stepCount(opt, scene.settings.dt);
-  // Step 0 is the initial state; then every K steps.
-  std::string csv = "step,time,body,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz\n";
-  const bool trajectory = !opt.out.empty();
-  if (trajectory) appendRows(csv, *world, 0);
+  // The starting state first; then every K-th step.
+  Trajectory trajectory(opt);
+  trajectory.record(*world, true);
   ProfileSums sums;
   Progress progress(steps);
   const double wall_s = runSteps(*world, steps, &sums, [&](int64_t i) {
-    if (trajectory && i % opt.every == 0) appendRows(csv, *world, i);
+    trajectory.record(*world, false);
+    checkpoints.after(*world, i);
     progress.update(i);
   });
   progress.finish();
-  // Outputs: the trajectory, the statistics, and the hash or a one-line summary on stdout.
-  if (trajectory) writeFile(opt.out, csv, "--out");
+  // Outputs: the trajectory, the checkpoint, the statistics, and the hash or a one-line
+  // summary on stdout.
+  trajectory.finish();
+  checkpoints.save(*world);
   if (!opt.stats.empty())
-    writeFile(opt.stats, statsJson(opt, scene, *world, sums, steps, wall_s).dump(2) + "\n",
-              "--stats");
+    writing("--stats", [&] {
+      writeFileAtomically(opt.stats,
+                          statsJson(opt, scene, *world, sums, steps, wall_s).dump(2) + "\n");
+    });
   if (opt.hash) {
     std::printf("%016llx\n", static_cast<unsigned long long>(world->stateHash()));
   } else {
@@ -235,6 +300,15 @@ void registerRunCommand(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--stats", opt->stats, "Per-step averages (contacts, stage times) as JSON");
   sub->add_flag("--hash", opt->hash, "Print the final state hash (16 hex digits)");
+  sub->add_option("--save-state", opt->save_state,
+                  "Checkpoint file of the final state (binary; docs/checkpoints.md)");
+  sub->add_option("--load-state", opt->load_state,
+                  "Continue from a checkpoint of this scene (--seconds/--steps: how much more)")
+      ->check(CLI::ExistingFile);
+  sub->add_option("--checkpoint-every", opt->checkpoint_every,
+                  "Also write --save-state each time this much simulated time has passed (s)")
+      ->check(positiveNumber())
+      ->needs(sub->get_option("--save-state"));
 
   // Overrides of the scene's settings.
   sub->add_option("--friction", opt->friction, "Limit surface: coulomb, box or polygon")

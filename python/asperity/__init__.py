@@ -229,16 +229,31 @@ def _read_csv(path):
 
 
 def write_csv(columns, path):
-    """Writes a sweep's columns as CSV (numbers in shortest round-trip form, as the CLI)."""
+    """Writes a sweep's columns as CSV (numbers in shortest round-trip form, as the CLI),
+    whole or not at all: into PATH.tmp, renamed into place when complete (as the CLI's
+    outputs; a device such as /dev/stdout is written in place)."""
     keys = list(columns)
-    with open(path, "w", encoding="utf-8") as f:
-        f.write(",".join(keys) + "\n")
-        for i in range(len(columns["sample"])):
-            cells = []
-            for k in keys:
-                v = columns[k][i]
-                cells.append(str(v) if isinstance(v, (str, np.str_, np.integer)) else _number(v))
-            f.write(",".join(cells) + "\n")
+    lines = [",".join(keys) + "\n"]
+    for i in range(len(columns["sample"])):
+        cells = []
+        for k in keys:
+            v = columns[k][i]
+            cells.append(str(v) if isinstance(v, (str, np.str_, np.integer)) else _number(v))
+        lines.append(",".join(cells) + "\n")
+    path = os.fspath(path)
+    in_place = os.path.exists(path) and not os.path.isfile(path)
+    temporary = path if in_place else path + ".tmp"
+    try:
+        with open(temporary, "w", encoding="utf-8") as f:
+            f.write("".join(lines))
+            f.flush()
+            if not in_place:
+                os.fsync(f.fileno())
+        if not in_place:
+            os.replace(temporary, path)
+    finally:
+        if not in_place and os.path.exists(temporary):
+            os.remove(temporary)
 
 
 def _number(x):

@@ -32,7 +32,7 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
                                    std::optional<std::string> frame, std::optional<int> directions,
                                    std::optional<double> patch_width,
                                    std::optional<int> patch_resolution,
-                                   std::optional<int> threads) {
+                                   std::optional<int> threads, const py::object& state) {
   // Scenes may ask for the core samplers and, when built with OpenGL, "gl".
   InstantiateOptions options;
 #ifdef ASPERITY_HAVE_RENDER
@@ -72,6 +72,7 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
   w->world->diagnostics().setSink(warn);
   for (const Body& b : w->world->bodies())
     w->origin_offsets.push_back(b.com_offset.rotation.conjugate() * b.com_offset.position);
+  if (!state.is_none()) loadState(*w, state);
   return w;
 }
 
@@ -171,13 +172,26 @@ void bindWorld(py::module_& m) {
                             "(constant, cone, cpu, gl), friction (coulomb, box, polygon), frame "
                             "(world, body, auto, texture), directions N, patch_width w (m), "
                             "patch_resolution R, threads (worker threads of a step, 0 = every "
-                            "core; the results are the same bits for any count).");
+                            "core; the results are the same bits for any count). state: a checkpoint file "
+                            "(save_state, `asperity run --save-state`) to continue from, bit for "
+                            "bit.");
   // Construction, stepping and the state arrays.
   world
       .def(py::init(&makeWorld), py::arg("scene"), py::kw_only(), py::arg("sampler") = py::none(),
            py::arg("friction") = py::none(), py::arg("frame") = py::none(),
            py::arg("directions") = py::none(), py::arg("patch_width") = py::none(),
-           py::arg("patch_resolution") = py::none(), py::arg("threads") = py::none())
+           py::arg("patch_resolution") = py::none(), py::arg("threads") = py::none(),
+           py::arg("state") = py::none())
+      .def("save_state", &saveState, py::arg("path"),
+           "Writes the whole state (docs/checkpoints.md) to path, atomically: a world loaded "
+           "from it steps bit for bit as this one would. Raises ValueError naming the file when "
+           "it cannot be written.")
+      .def("load_state", &loadState, py::arg("path"),
+           "Restores a state that save_state (or `asperity run --save-state`) wrote for this "
+           "scene, with the same overrides but any thread count. Raises ValueError naming the "
+           "file and what is wrong (another scene, another sampler, another format, a truncated "
+           "or corrupt file); FileNotFoundError when it does not exist. After an error, build "
+           "the world anew.")
       .def(
           "step",
           [](PyWorld& w, int64_t n) {

@@ -1,7 +1,9 @@
 // NumPy views of a world's state: read into fresh arrays without per-body Python objects,
 // written back body by body after checking shape and finiteness.
 #include <cmath>
+#include <filesystem>
 
+#include "asperity/world/state_file.hpp"
 #include "world_state.hpp"
 
 namespace asperity::python {
@@ -189,6 +191,23 @@ py::dict contacts(const PyWorld& w) {
   d["frames"] = frames, d["phi"] = phi, d["impulses"] = impulses, d["mu"] = mu;
   d["patch_pixels"] = pixels, d["fallback"] = fallback;
   return d;
+}
+
+static std::string pathArg(const py::handle& path) {
+  return py::str(py::module_::import("os").attr("fspath")(path));
+}
+
+void saveState(const PyWorld& w, const py::handle& path) {
+  const std::string file = pathArg(path);
+  py::gil_scoped_release release;
+  saveStateFile(*w.world, file, sceneStateId(w.scene));
+}
+
+void loadState(PyWorld& w, const py::handle& path) {
+  const std::string file = pathArg(path);
+  if (!std::filesystem::exists(file)) throwFileNotFound(file + ": no such file");
+  py::gil_scoped_release release;
+  loadStateFile(*w.world, file, sceneStateId(w.scene));
 }
 
 }  // namespace asperity::python

@@ -28,6 +28,9 @@ void setPositions(PyWorld& w, const py::handle& values);
 void setOrientations(PyWorld& w, const py::handle& values);
 void setLinearVelocities(PyWorld& w, const py::handle& values);
 void setAngularVelocities(PyWorld& w, const py::handle& values);
+// Checkpoints (asperity/world/state_file.hpp), named by a str or os.PathLike.
+void saveState(const PyWorld& w, const py::handle& path);
+void loadState(PyWorld& w, const py::handle& path);
 
 // Contacts of the last step as a dict of arrays.
 py::dict contacts(const PyWorld& w);

@@ -126,3 +126,44 @@ def test_a_killed_sweep_resumes_to_the_bytes_of_one_run(tmp_path):
     np.testing.assert_array_equal(resumed["box.x"], columns["box.x"])
     with pytest.raises(ValueError, match="resume=True needs out="):
         asperity.sweep(scene, resume=True, **kwargs)
+
+
+def test_a_dask_sweep_survives_a_killed_worker(minimal_scene):
+    """One worker process of a LocalCluster is killed (SIGKILL) while the sweep runs: the
+    scheduler gives its chunks to the other worker (and the restarted one), and the result is
+    the threaded sweep's, number for number."""
+    import os
+    import signal
+    import threading
+    import time
+
+    import distributed
+
+    kwargs = dict(vary=VARY, samples=64, seconds=1.5, seed=11, measure=["distance:box"])
+    local = asperity.sweep(minimal_scene, threads=2, **kwargs)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        pids = client.run(os.getpid)
+        result = {}
+        runner = threading.Thread(
+            target=lambda: result.update(columns=asperity.sweep(minimal_scene, client=client,
+                                                                **kwargs)))
+        runner.start()
+        # Once a chunk runs on each worker, one of them is killed.
+        deadline = time.monotonic() + 30
+        while time.monotonic() < deadline:
+            busy = [w for w, tasks in client.processing().items() if tasks]
+            if len(busy) == 2:
+                break
+            time.sleep(0.005)
+        victim = sorted(pids)[0]
+        os.kill(pids[victim], signal.SIGKILL)
+        killed_mid_run = runner.is_alive()
+        runner.join(120)
+        assert not runner.is_alive(), "the sweep did not finish after a worker was killed"
+    assert killed_mid_run, "the sweep ended before the worker was killed"
+    on_cluster = result["columns"]
+    assert list(on_cluster) == list(local)
+    for key in local:
+        np.testing.assert_array_equal(on_cluster[key], local[key])

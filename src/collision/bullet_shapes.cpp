@@ -173,7 +173,18 @@ double marginFor(double size) {
   return std::min(0.04, 0.02 * size);
 }
 
-BulletShape makeBulletShape(const Shape& shape, BodyType body_type) {
+void BoxPolyhedra::apply(btBoxShape& box) {
+  const btVector3 half = box.getHalfExtentsWithoutMargin();
+  auto& made = made_[{half.x(), half.y(), half.z(), box.getMargin()}];
+  if (made) {
+    box.setPolyhedralFeatures(*made);
+    return;
+  }
+  box.initializePolyhedralFeatures();
+  made = std::make_unique<btConvexPolyhedron>(*box.getConvexPolyhedron());
+}
+
+BulletShape makeBulletShape(const Shape& shape, BodyType body_type, BoxPolyhedra* boxes) {
   BulletShape out;
   const double size = shapeSize(shape);
   const auto margin = static_cast<btScalar>(marginFor(size));
@@ -182,7 +193,11 @@ BulletShape makeBulletShape(const Shape& shape, BodyType body_type) {
       // Box margins lie inside the box: the corners stay exact.
       auto box = std::make_unique<btBoxShape>(toBt(shape.half_extents));
       box->setMargin(margin);
-      box->initializePolyhedralFeatures();
+      if (boxes) {
+        boxes->apply(*box);
+      } else {
+        box->initializePolyhedralFeatures();
+      }
       out.shape = std::move(box);
       break;
     }

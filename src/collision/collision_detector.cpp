@@ -49,6 +49,8 @@ using namespace collision_detail;
 
 void CollisionDetector::Impl::release() {
   // The world removes its objects' proxies, so it goes before the objects and broadphase.
+  restored_manifolds.clear();
+  lazy_algorithms.clear();
   world.reset();
   records.clear();
   broadphase.reset();
@@ -125,7 +127,8 @@ void CollisionDetector::Impl::createWorld(size_t shape_count) {
   world->getPairCache()->setOverlapFilterCallback(&filter);
 }
 
-void CollisionDetector::Impl::addBody(BodyId id, const Body& body) {
+void CollisionDetector::Impl::addBody(BodyId id, const Body& body,
+                                      BoxPolyhedra& boxes) {
   for (size_t s = 0; s < body.shapes.size(); ++s) {
     ShapeRecord rec;
     rec.body = id;
@@ -134,7 +137,7 @@ void CollisionDetector::Impl::addBody(BodyId id, const Body& body) {
     rec.shape = body.shapes[s];
     rec.bounding_radius = boundingRadius(rec.shape);
     rec.size = shapeSize(rec.shape);
-    rec.bullet = makeBulletShape(scaledShape(rec.shape, scale), body.type);
+    rec.bullet = makeBulletShape(scaledShape(rec.shape, scale), body.type, &boxes);
     // Closed meshes may take the signed-distance path (sdf_pairs).
     rec.closed_mesh = rec.shape.type == ShapeType::TriangleMesh && isClosedMesh(*rec.shape.mesh);
     // Face planes of hulls, for putting witness points back onto the true surface.
@@ -200,9 +203,10 @@ void CollisionDetector::Impl::build(std::span<const Body> bodies) {
   for (const Body& b : bodies) shape_count += b.shapes.size();
   createWorld(shape_count);
   // Records for every shape of every body, then the Bullet objects.
+  BoxPolyhedra boxes;
   for (size_t b = 0; b < bodies.size(); ++b) {
     body_types.push_back(bodies[b].type);
-    addBody(static_cast<BodyId>(b), bodies[b]);
+    addBody(static_cast<BodyId>(b), bodies[b], boxes);
   }
   for (ShapeRecord& rec : records) world->addCollisionObject(rec.object.get());
   prepareSdf();

@@ -41,6 +41,8 @@
 namespace asperity {
 
 class ThreadPool;  // parallel/thread_pool.hpp
+class StateReader;  // asperity/math/state_stream.hpp
+class StateWriter;
 
 // How concave mesh pairs are handled.
 enum class MeshPairMode {
@@ -88,6 +90,14 @@ class CollisionDetector {
   // Numbers new contact points from 1 again, as in a new detector (with setBodies and the
   // solver's warm start forgotten: World::forgetContactHistory).
   void restartPointIds();
+  // What the next detect depends on beyond the bodies (the next point id and, with
+  // `structures`, Bullet's broadphase, pairs and persistent manifolds: detector_state.cpp),
+  // saved; loadState puts it into a detector that setBodies has just built for the same
+  // bodies, and the detects that follow are those the saved detector would have made, bit for
+  // bit. Without `structures` (a detector about to be rebuilt) only the point id is kept.
+  // Throws asperity::Error for a state that does not fit these shapes.
+  void saveState(StateWriter& out, bool structures) const;
+  void loadState(StateReader& in, bool structures);
 
  private:
   struct Impl;

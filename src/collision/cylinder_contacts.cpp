@@ -55,46 +55,97 @@ double argMin(const AxisDistance& f, double lo, double hi) {
   return 0.5 * (lo + hi);
 }
 
-// Where a box face or a capsule lies along the side (its normal within about 25 degrees of
-// the contact's, a capsule's axis within 25 degrees of the cylinder's), the axis parameters of
-// its two ends; else an empty interval.
-struct Stretch {
-  double lo = 0.0, hi = 0.0;
+// The two ends of the line along which a shape lies on the side, as points of the shape
+// (world); `found` false where it touches at one point.
+struct Line {
+  bool found = false;
+  Vec3 ends[2];
 };
-Stretch alongAxis(const Shape& shape, const Transform& world, const Axis& axis, const Vec3& n) {
-  constexpr double kAligned = 0.9;
-  Stretch s;
-  if (shape.type == ShapeType::Box) {
-    // The face turned most toward the axis (outward normal closest to -n).
-    const Mat3 r = world.rotation.toRotationMatrix();
-    int k = 0;
-    (r.transpose() * -n).cwiseAbs().maxCoeff(&k);
-    const double sign = (r.col(k).dot(-n) >= 0) ? 1.0 : -1.0;
-    if (sign * r.col(k).dot(-n) < kAligned) return s;
-    const Vec3& h = shape.half_extents;
-    const Vec3 face_centre = world.position + sign * h[k] * r.col(k);
-    // The face's half extent along the axis: its two in-plane edges projected on u.
-    double half = 0.0;
-    for (int e = 0; e < 3; ++e) {
-      if (e != k) half += h[e] * std::abs(r.col(e).dot(axis.u));
-    }
-    const double mid = (face_centre - axis.centre).dot(axis.u);
-    s.lo = mid - half, s.hi = mid + half;
-  } else if (shape.type == ShapeType::Capsule) {
-    const Vec3 w = world.rotation * Vec3::UnitZ();
-    if (std::abs(w.dot(axis.u)) < kAligned) return s;
-    const double mid = (world.position - axis.centre).dot(axis.u);
-    const double half = shape.half_height * std::abs(w.dot(axis.u));
-    s.lo = mid - half, s.hi = mid + half;
+
+// Within about 25 degrees: a face turned toward the axis, an edge or capsule along it.
+constexpr double kAligned = 0.9;
+
+// The t interval of the axis line p(t) = p0 + t d (d unit) on which the 1D coordinate
+// x0 + t dx stays within [-half, half]; intersected with [lo, hi].
+void clip(double x0, double dx, double half, double& lo, double& hi) {
+  if (std::abs(dx) < 1e-12) {
+    if (std::abs(x0) > half) lo = hi + 1.0;  // outside for every t: empty
+    return;
   }
-  s.lo = std::max(s.lo, -axis.half), s.hi = std::min(s.hi, axis.half);
-  return s;
+  double a = (-half - x0) / dx, b = (half - x0) / dx;
+  if (a > b) std::swap(a, b);
+  lo = std::max(lo, a), hi = std::min(hi, b);
 }
 
-// The contact at axis parameter t: the shape's closest point and its foot on the axis.
-bool sidePoint(const Axis& axis, double radius, const Shape& shape, const Transform& world,
-               double t, int id, CylinderSidePoint& out) {
-  const Vec3 q = closestOnShape(shape, world, axis.at(t));
+// A box face turned toward the axis (outward normal within 25 degrees of -n) touches the side
+// where the face's plane is nearest the axis: the axis projected onto the face, a line (the
+// face's plane is parallel to the axis within 25 degrees). Its ends are the projected axis
+// clipped to the face rectangle and to the rod's length. Where that line misses the face, the
+// box rests on an edge: one lying along the axis touches along it, from end to end.
+Line boxLine(const Shape& box, const Transform& world, const Axis& axis, const Vec3& n,
+             const Vec3& deepest) {
+  Line line;
+  const Mat3 r = world.rotation.toRotationMatrix();
+  const Vec3& h = box.half_extents;
+  int k = 0;
+  (r.transpose() * -n).cwiseAbs().maxCoeff(&k);
+  const double sign = (r.col(k).dot(-n) >= 0) ? 1.0 : -1.0;
+  if (sign * r.col(k).dot(-n) >= kAligned) {
+    const Vec3 face_centre = world.position + sign * h[k] * r.col(k);
+    double lo = -axis.half, hi = axis.half;
+    const Vec3 p0 = axis.centre - face_centre;
+    for (int e = 0; e < 3; ++e) {
+      if (e != k) clip(p0.dot(r.col(e)), axis.u.dot(r.col(e)), h[e], lo, hi);
+    }
+    if (lo < hi) {
+      const Mat3 in_plane = Mat3::Identity() - r.col(k) * r.col(k).transpose();
+      for (const auto& [t, i] : {std::pair{lo, 0}, std::pair{hi, 1}}) {
+        line.ends[i] = face_centre + in_plane * (axis.at(t) - face_centre);
+      }
+      line.found = true;
+      return line;
+    }
+  }
+  // An edge along the axis: the deepest point lies on the box's boundary in both coordinates
+  // across that edge.
+  const Vec3 local = r.transpose() * (deepest - world.position);
+  const double tol = 1e-6 * h.maxCoeff();
+  for (int e = 0; e < 3; ++e) {
+    if (std::abs(r.col(e).dot(axis.u)) < kAligned) continue;
+    const int a = (e + 1) % 3, b = (e + 2) % 3;
+    if (std::abs(local[a]) < h[a] - tol || std::abs(local[b]) < h[b] - tol) continue;
+    // The edge's extent, cut where its points' feet leave the rod's length.
+    double lo = -h[e], hi = h[e];
+    const double along = r.col(e).dot(axis.u);
+    const double mid = (deepest - r.col(e) * local[e] - axis.centre).dot(axis.u);
+    clip(mid, along, axis.half, lo, hi);
+    if (lo >= hi) return line;
+    const Vec3 base = deepest - local[e] * r.col(e);
+    line.ends[0] = base + lo * r.col(e), line.ends[1] = base + hi * r.col(e);
+    line.found = true;
+    return line;
+  }
+  return line;
+}
+
+// A capsule lying along the side (its axis within 25 degrees of the cylinder's) touches along
+// its core: its points nearest the axis at its two ends' axis parameters.
+Line capsuleLine(const Shape& capsule, const Transform& world, const Axis& axis) {
+  Line line;
+  const Vec3 w = world.rotation * Vec3::UnitZ();
+  if (std::abs(w.dot(axis.u)) < kAligned) return line;
+  const double mid = (world.position - axis.centre).dot(axis.u);
+  const double half = capsule.half_height * std::abs(w.dot(axis.u));
+  const double lo = std::max(mid - half, -axis.half), hi = std::min(mid + half, axis.half);
+  if (lo >= hi) return line;
+  line.ends[0] = closestOnShape(capsule, world, axis.at(lo));
+  line.ends[1] = closestOnShape(capsule, world, axis.at(hi));
+  line.found = true;
+  return line;
+}
+
+// The contact at the shape's point q: its foot on the axis, the normal from there to q.
+bool sidePoint(const Axis& axis, double radius, const Vec3& q, int id, CylinderSidePoint& out) {
   const Vec3 foot = axis.at(axis.param(q));
   const Vec3 d = q - foot;
   const double dist = d.norm();
@@ -134,24 +185,31 @@ bool cylinderSidePoints(const Shape& cylinder, const Transform& cylinder_world, 
   // The axis inside the shape, or the nearest cross-section at a cap: the general path.
   const double tiny = 1e-9 * (cylinder.radius + bound);
   if (nearest <= tiny || t_min <= -axis.half + tiny || t_min >= axis.half - tiny) return false;
-  // A face or capsule lying along the side: a point at each of its ends, as a manifold has;
+  // A face, edge or capsule lying along the side: a point at each end of the line it touches
+  // along, as a manifold has;
   // one not quite flat on the side gets its lifted end as a speculative point (depth < 0),
   // which the solver lets close but not pass.
   const Vec3 q = closestOnShape(shape, shape_world, axis.at(t_min));
-  const Stretch stretch = alongAxis(shape, shape_world, axis, (q - axis.at(t_min)).normalized());
+  const Vec3 n = (q - axis.at(t_min)).normalized();
+  const Line line = shape.type == ShapeType::Box       ? boxLine(shape, shape_world, axis, n, q)
+                    : shape.type == ShapeType::Capsule ? capsuleLine(shape, shape_world, axis)
+                                                       : Line{};
   const double speculative = std::max(reach, 0.25 * shapeSize(shape));
   CylinderSidePoint p;
-  if (stretch.hi - stretch.lo > 0.05 * shapeSize(shape)) {
-    for (const auto& [t, id] : {std::pair{stretch.lo, 0}, std::pair{stretch.hi, 1}}) {
-      if (sidePoint(axis, cylinder.radius, shape, shape_world, t, id, p) &&
-          p.depth > -speculative) {
+  if (line.found && (line.ends[1] - line.ends[0]).norm() > 0.05 * shapeSize(shape)) {
+    // A face tilted along the axis sinks deepest at a corner off the line: that corner
+    // stands for the line's deeper end.
+    Vec3 ends[2] = {line.ends[0], line.ends[1]};
+    auto fromAxis = [&](const Vec3& x) { return (x - axis.at(axis.param(x))).norm(); };
+    const int deeper = fromAxis(ends[0]) <= fromAxis(ends[1]) ? 0 : 1;
+    if (fromAxis(ends[deeper]) > nearest + tiny) ends[deeper] = q;
+    for (int id : {0, 1}) {
+      if (sidePoint(axis, cylinder.radius, ends[id], id, p) && p.depth > -speculative) {
         out.push_back(p);
       }
     }
   }
-  if (out.empty() && sidePoint(axis, cylinder.radius, shape, shape_world, t_min, 2, p)) {
-    out.push_back(p);
-  }
+  if (out.empty() && sidePoint(axis, cylinder.radius, q, 2, p)) out.push_back(p);
   return !out.empty() || nearest > cylinder.radius;
 }
 

@@ -1,7 +1,8 @@
 // Boxes, capsules and spheres against the side of a cylinder, in double precision: contact
-// normals that point radially out of the cylinder's axis, and two points along the axis where
-// a flat face or a capsule lies along the side, so that a chain link on a rod neither tips
-// about one point nor is pushed along the rod by a tilted normal.
+// normals that point radially out of the cylinder's axis, and two points where a flat face, an
+// edge or a capsule lies along the side (the ends of the line it touches along), so that a
+// chain link on a rod neither tips about one point nor is pushed along the rod by a tilted
+// normal.
 //
 // Rejected alternative: Bullet's convex pair (GJK/EPA, then its manifold of one new point per
 // call) on a box against a cylinder: its normals came tilted up to 0.49 along the rod's axis,
@@ -9,8 +10,9 @@
 // tilted rod (docs/experiments.md).
 //
 // How: the distance from a point of the axis to the other shape is convex along the axis; its
-// minimum (golden section) gives the deepest cross-section and one point. A box face or a
-// capsule lying along the side gets instead a point at each of its two ends along the axis.
+// minimum (golden section) gives the deepest cross-section and one point. A box face, a box
+// edge or a capsule lying along the side gets instead a point at each end of the line it
+// touches along.
 // Each point's normal runs from the foot of the shape's point on the axis to that point:
 // radial by construction.
 #pragma once

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -20,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "asperity/math/state_stream.hpp"
 #include "collision/collision_detector.hpp"
 #include "collision/cylinder_contacts.hpp"
 #include "collision/mesh_features.hpp"
@@ -63,6 +65,7 @@ struct CollisionDetector::Impl {
         : btCollisionDispatcher(config), impl(owner) {}
     btPersistentManifold* getNewManifold(const btCollisionObject* b0,
                                          const btCollisionObject* b1) override;
+    void freeCollisionAlgorithm(void* algorithm) override;
   };
 
   // What sorting needs of a contact found, in the order found; a manifold slot's entry is
@@ -129,6 +132,16 @@ struct CollisionDetector::Impl {
   std::vector<btBroadphasePair*> deferred;
   std::vector<ManifoldList> pair_manifolds;
   uint64_t next_point_id = 1;
+  // A restored state's manifolds (detector_state.cpp) by their pair of objects, until the
+  // pair's algorithm asks Dispatcher::getNewManifold for its own.
+  using ObjectPair = std::pair<const btCollisionObject*, const btCollisionObject*>;
+  static ObjectPair objectPair(const btCollisionObject* a, const btCollisionObject* b) {
+    return std::less<>()(a, b) ? ObjectPair{a, b} : ObjectPair{b, a};
+  }
+  std::map<ObjectPair, btPersistentManifold*> restored_manifolds;
+  // Restored algorithms that make their manifold lazily (convex pairs), until they take it: one
+  // dropped before that releases its manifold as its destructor would have.
+  std::map<void*, ObjectPair> lazy_algorithms;
 
   ~Impl() { release(); }
 
@@ -187,9 +200,21 @@ struct CollisionDetector::Impl {
   // Building (collision_detector.cpp).
   void build(std::span<const Body> bodies);
   void createWorld(size_t shape_count);
-  void addBody(BodyId id, const Body& body);
+  void addBody(BodyId id, const Body& body, collision_detail::BoxPolyhedra& boxes);
   void prepareSdf();
   void release();
+
+  // The persistence saved and restored (detector_state.cpp).
+  struct TreeLoader;
+  void saveBroadphase(StateWriter& out) const;
+  void loadBroadphase(StateReader& in);
+  void savePairs(StateWriter& out) const;
+  void loadPairs(StateReader& in);
+  // The saved manifolds made empty in their order (points returned, put in after the pairs).
+  void loadManifolds(StateReader& in, const TreeLoader& loader,
+                     std::vector<btPersistentManifold*>& made,
+                     std::vector<std::vector<btManifoldPoint>>& points);
+  const btCollisionObject* objectOf(const TreeLoader& loader, int record) const;
 
   // One call, in order (collision_detector.cpp), and its result sorted.
   void collect(std::span<const Body> bodies, const ThreadPool* pool);

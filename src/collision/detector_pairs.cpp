@@ -21,12 +21,36 @@ bool CollisionDetector::Impl::PairFilter::needBroadphaseCollision(btBroadphasePr
 
 btPersistentManifold* CollisionDetector::Impl::Dispatcher::getNewManifold(
     const btCollisionObject* b0, const btCollisionObject* b1) {
+  // A restored pair's algorithm takes the manifold saved for it, in its saved place.
+  if (!impl->restored_manifolds.empty()) {
+    const auto it = impl->restored_manifolds.find(objectPair(b0, b1));
+    if (it != impl->restored_manifolds.end()) {
+      btPersistentManifold* restored = it->second;
+      impl->restored_manifolds.erase(it);
+      return restored;
+    }
+  }
   btPersistentManifold* m = btCollisionDispatcher::getNewManifold(b0, b1);
   if (impl->settings.contact_margin > 0) {
     m->setContactBreakingThreshold(
         static_cast<btScalar>(impl->settings.contact_margin * impl->scale));
   }
   return m;
+}
+
+void CollisionDetector::Impl::Dispatcher::freeCollisionAlgorithm(void* algorithm) {
+  if (!impl->lazy_algorithms.empty()) {
+    const auto lazy = impl->lazy_algorithms.find(algorithm);
+    if (lazy != impl->lazy_algorithms.end()) {
+      const auto pending = impl->restored_manifolds.find(lazy->second);
+      if (pending != impl->restored_manifolds.end()) {
+        releaseManifold(pending->second);
+        impl->restored_manifolds.erase(pending);
+      }
+      impl->lazy_algorithms.erase(lazy);
+    }
+  }
+  btCollisionDispatcher::freeCollisionAlgorithm(algorithm);
 }
 
 // Bullet's separating-axis search projects every vertex on every pair of edge directions:

@@ -57,11 +57,12 @@ struct RunProfile {
   uint64_t state_hash = 0;  // of the world at the end of the run
 };
 
-// A curve of a plot: y over x (time, usually).
+// A curve of a plot: y over x (time, usually); or, with `dots`, separate points (a map).
 struct Series {
   std::string label;
   std::vector<double> x;
   std::vector<double> y;
+  bool dots = false;
 };
 
 struct Plot {

@@ -7,6 +7,7 @@
 
 #include "asperity/error.hpp"
 #include "asperity/geometry/mesh_io.hpp"
+#include "asperity/texture/height_map.hpp"
 #include "geometry/asset_import_internal.hpp"
 
 namespace asperity::detail {
@@ -26,10 +27,31 @@ const tinyobj::material_t* pickMaterial(const tinyobj::ObjReader& reader,
       if (id < 0 || static_cast<size_t>(id) >= materials.size()) continue;
       const tinyobj::material_t& m = materials[static_cast<size_t>(id)];
       if (!first) first = &m;
-      if (!m.normal_texname.empty() || !m.bump_texname.empty()) return &m;
+      if (!m.normal_texname.empty() || !m.bump_texname.empty() ||
+          !m.displacement_texname.empty())
+        return &m;
     }
   }
   return first;
+}
+
+// True for PNG bytes whose colour type (IHDR, byte 25) is grey or grey + alpha.
+bool isGreyPng(const std::vector<uint8_t>& bytes) {
+  static const uint8_t signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  return bytes.size() > 25 && std::equal(signature, signature + 8, bytes.begin()) &&
+         (bytes[25] == 0 || bytes[25] == 4);
+}
+
+// A grey `bump` or `disp` image is a height map (SPEC 13): grey * multiplier texels high, as the
+// heightmap generator reads one, its normals by central differences wrapping like the sampler.
+NormalMap heightsToNormals(const std::string& file, double multiplier, const std::string& asset) {
+  try {
+    const HeightMap heights = loadHeightMapPng(file, multiplier);
+    // A texture one texel per unit wide: slopes in height texels per texel.
+    return normalsFromHeightMap(heights, static_cast<double>(heights.width));
+  } catch (const Error& e) {
+    throw Error(asset + ": height map: " + e.what());
+  }
 }
 
 // Material fields of one MTL entry; the normal map decoded when asked.
@@ -45,17 +67,27 @@ AssetMaterial readMaterial(const tinyobj::material_t& m, const std::string& path
     out.base_color_image = decodeAssetColorImage(
         readAssetFile(resolveBeside(dir, m.diffuse_texname), path, part), path, part);
   }
-  // `norm` first; `map_Bump` / `bump` with its -bm multiplier otherwise.
+  // `norm` first; `map_Bump` / `bump` with its -bm multiplier, then `disp`, otherwise.
   const bool norm = !m.normal_texname.empty();
-  const std::string ref = norm ? m.normal_texname : m.bump_texname;
+  const bool bump = !norm && !m.bump_texname.empty();
+  const std::string ref = norm ? m.normal_texname : bump ? m.bump_texname : m.displacement_texname;
   if (ref.empty()) return out;
   out.has_normal_texture = true;
-  out.normal_scale =
-      static_cast<double>(norm ? m.normal_texopt.bump_multiplier : m.bump_texopt.bump_multiplier);
+  const tinyobj::texture_option_t& opt =
+      norm ? m.normal_texopt : bump ? m.bump_texopt : m.displacement_texopt;
+  out.normal_scale = static_cast<double>(opt.bump_multiplier);
   if (!options.load_textures) return out;
   const std::string part = "image '" + ref + "'";
-  const std::vector<uint8_t> bytes = readAssetFile(resolveBeside(dir, ref), path, part);
+  const std::string file = resolveBeside(dir, ref);
+  const std::vector<uint8_t> bytes = readAssetFile(file, path, part);
   out.normal_map_name = part;
+  // A grey bump or displacement image holds heights; a colour one, normals (what obj2gltf and
+  // most exporters write under `bump`).
+  if (!norm && isGreyPng(bytes)) {
+    out.normal_map =
+        std::make_shared<const NormalMap>(heightsToNormals(file, out.normal_scale, path));
+    return out;
+  }
   out.normal_map = std::make_shared<const NormalMap>(
       decodeAssetNormalMap(bytes, path, part, options.green, out.normal_scale, out.normal_stats));
   return out;

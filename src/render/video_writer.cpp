@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "asperity/error.hpp"
+#include "asperity/math/atomic_file.hpp"
 
 namespace asperity::render {
 namespace {
@@ -34,7 +35,7 @@ std::string findExecutable(const std::string& name) {
 }
 
 VideoWriter::VideoWriter(const std::string& path, int width, int height, double fps)
-    : path_(path), width_(width), height_(height) {
+    : path_(path), output_(std::make_unique<AtomicOutput>(path)), width_(width), height_(height) {
   const std::string ffmpeg = findExecutable("ffmpeg");
   if (ffmpeg.empty())
     throw Error(path +
@@ -45,7 +46,8 @@ VideoWriter::VideoWriter(const std::string& path, int width, int height, double 
   command << shellQuote(ffmpeg) << " -y -loglevel error -f rawvideo -pix_fmt rgb24 -s " << width
           << "x" << height << " -r " << fps
           << " -i - -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -preset medium -crf 18"
-          << " -pix_fmt yuv420p -movflags +faststart " << shellQuote(path);
+          << " -pix_fmt yuv420p -movflags +faststart -f mp4 "
+          << shellQuote(output_->temporaryPath());
   // A closed pipe must surface as an error from write(), not kill the process.
   std::signal(SIGPIPE, SIG_IGN);
   pipe_ = popen(command.str().c_str(), "w");
@@ -71,6 +73,8 @@ void VideoWriter::finish() {
   if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw Error(path_ + ": ffmpeg failed to write the video (exit status " +
                 std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");
+  // Whole: under its name now (until then ffmpeg wrote a temporary beside it).
+  output_->commit();
 }
 
 }  // namespace asperity::render

@@ -10,6 +10,7 @@
 #include "asperity/friction/fragment_model.hpp"
 #include "parallel/thread_pool.hpp"
 #include "sampler/patch_common.hpp"
+#include "sampler/patch_contact_area.hpp"
 #include "sampler/patch_geometry.hpp"
 #include "sampler/patch_planar.hpp"
 #include "sampler/patch_reuse.hpp"
@@ -44,15 +45,22 @@ double msBetween(Clock::time_point a, Clock::time_point b) {
 // Scratch kept between calls: rasters, fragment arrays, sample directions.
 struct CpuPatchSampler::State {
   State(patch::MeshCache& shared, const patch::TableCache& shared_tables,
-        const CpuSamplerOptions& opt)
+        const CpuSamplerOptions& opt, const patch::HeightCache& height_cache)
       : meshes(shared),
         tables(shared_tables),
         simd(opt.simd),
-        planar(opt.path == PatchPath::Planar) {}
+        planar(opt.path == PatchPath::Planar && opt.contact_area.model == FrictionModel::Paper),
+        area(opt.contact_area),
+        heights(height_cache) {}
   patch::MeshCache& meshes;         // the sampler's, shared by every thread's state
   const patch::TableCache& tables;  // the sampler's; built before the contacts are sampled
   SimdCopy simd;                    // the sampler's option, for every loop this state runs
-  bool planar;                      // flat patches through the tables (patch_planar.hpp)
+  // Flat patches through the tables (patch_planar.hpp); the paper's model only (the
+  // contact-area model needs each pixel).
+  bool planar;
+  const ContactAreaOptions& area;     // the sampler's option
+  const patch::HeightCache& heights;  // the sampler's, shared (read only while sampling)
+  patch::AreaScratch area_scratch;
   patch::GeometryScratch geometry;
   std::array<patch::SurfaceRaster, 2> raster;  // A, B
   std::vector<uint32_t> in_patch;              // P as Volume::pack(i, j)
@@ -76,6 +84,11 @@ struct CpuPatchSampler::State {
                                             const FrictionSettings& settings, PatchImages* images);
   void fillImages(const patch::Volume& volume, const FrictionSettings& settings,
                   PatchImages& images);
+  // Eq. 8 and 7 over P (the paper's model), or the contact-area model (SPEC 13).
+  void finishPaper(const patch::ShapeRange (&ranges)[2], Contact& contact,
+                   const FrictionSettings& settings, size_t count);
+  void finishWithArea(const patch::Volume& volume, const patch::ShapeRange (&ranges)[2],
+                      Contact& contact, const FrictionSettings& settings);
   void reserveLike(const State& other);
 };
 
@@ -88,6 +101,7 @@ void CpuPatchSampler::State::reserveLike(const State& other) {
   in_patch.reserve(other.in_patch.capacity());
   gx.reserve(other.gx.capacity());
   gy.reserve(other.gy.capacity());
+  area_scratch.reserveLike(other.area_scratch);
   for (size_t s = 0; s < 2; ++s) {
     patch::SurfaceRaster& r = raster[s];
     const patch::SurfaceRaster& o = other.raster[s];
@@ -195,12 +209,26 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   // Rasterise both surfaces and find P, then shade P into ploughing vectors (A, then B).
   rasterise(volume, ranges, images != nullptr);
   const size_t count = in_patch.size();
-  const size_t n = directions.size();
   for (size_t s = 0; s < 2 && count > 0; ++s) {
     patch::shadePloughing(volume, raster[s], in_patch, settings.mu_max, gx.data() + s * count,
                           gy.data() + s * count);
   }
   const Clock::time_point t1 = Clock::now();
+  if (area.model == FrictionModel::ContactArea) {
+    finishWithArea(volume, ranges, contact, settings);
+  } else {
+    finishPaper(ranges, contact, settings, count);
+  }
+  const Clock::time_point t2 = Clock::now();
+  if (images != nullptr) fillImages(volume, settings, *images);
+  patch_ms += msBetween(t0, t1);
+  averaging_ms += msBetween(t1, t2);
+  return {raster[0].depth, raster[1].depth};
+}
+
+void CpuPatchSampler::State::finishPaper(const patch::ShapeRange (&ranges)[2], Contact& contact,
+                                         const FrictionSettings& settings, size_t count) {
+  const size_t n = directions.size();
   // Eq. 8 sums through the friction module's kernel.
   for (size_t s = 0; s < 2; ++s) {
     std::fill(sums[s].begin(), sums[s].begin() + static_cast<long>(n), 0.0);
@@ -213,11 +241,20 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   patch::finishContact(contact, std::span<const double>(sums[0].data(), n),
                        std::span<const double>(sums[1].data(), n), static_cast<int>(count),
                        patch::gainsOf(ranges[0], ranges[1], settings.mu0));
-  const Clock::time_point t2 = Clock::now();
-  if (images != nullptr) fillImages(volume, settings, *images);
-  patch_ms += msBetween(t0, t1);
-  averaging_ms += msBetween(t1, t2);
-  return {raster[0].depth, raster[1].depth};
+}
+
+void CpuPatchSampler::State::finishWithArea(const patch::Volume& volume,
+                                            const patch::ShapeRange (&ranges)[2], Contact& contact,
+                                            const FrictionSettings& settings) {
+  patch::AreaInputs in;
+  in.options = &area;
+  in.heights = &heights;
+  in.directions = directions;
+  in.gains = patch::gainsOf(ranges[0], ranges[1], settings.mu0);
+  in.mu_max = settings.mu_max;
+  in.simd = simd;
+  patch::finishAreaContact(volume, raster, in_patch, gx.data(), gy.data(),
+                           patch::mechanicalOf(area, contact, ranges), in, contact, area_scratch);
 }
 
 bool CpuPatchSampler::State::planarFace(const patch::Volume& volume, const patch::ShapeRange& range,
@@ -283,18 +320,29 @@ CpuPatchSampler::CpuPatchSampler(const CpuSamplerOptions& options)
     : options_(options),
       meshes_(std::make_unique<patch::MeshCache>()),
       tables_(std::make_unique<patch::TableCache>()),
-      state_(std::make_unique<State>(*meshes_, *tables_, options)),
-      reuse_(std::make_unique<patch::PatchReuse>()) {}
+      reuse_(std::make_unique<patch::PatchReuse>()),
+      heights_(std::make_unique<patch::HeightCache>()) {
+  state_ = std::make_unique<State>(*meshes_, *tables_, options_, *heights_);
+}
 
 void CpuPatchSampler::forgetHistory() {
   reuse_ = std::make_unique<patch::PatchReuse>();
 }
+void CpuPatchSampler::saveHistory(StateWriter& out) const {
+  reuse_->save(out);
+}
+
+void CpuPatchSampler::loadHistory(StateReader& in) {
+  reuse_->load(in);
+}
+
 CpuPatchSampler::~CpuPatchSampler() = default;
 
 void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& contact,
                                     const FrictionSettings& settings, PatchImages* images) {
   validatePatchSettings(settings, "cpu sampler");
   if (options_.path == PatchPath::Planar) prepareTables(bodies, contact, settings);
+  if (options_.contact_area.model == FrictionModel::ContactArea) heights_->prepare(bodies, contact);
   state_->sample(bodies, contact, settings, images);
 }
 
@@ -339,6 +387,11 @@ void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::spa
     for (size_t i = 0; i < contacts.size(); ++i)
       if (!reused_[i]) prepareTables(bodies, contacts[i], settings);
   }
+  // The contact-area model's heights are made here, on the calling thread, for all threads.
+  if (options_.contact_area.model == FrictionModel::ContactArea) {
+    for (size_t i = 0; i < contacts.size(); ++i)
+      if (!reused_[i]) heights_->prepare(bodies, contacts[i]);
+  }
   if (!pool_ || pool_->concurrency() == 1) {
     // One contact after the other; scratch is reused.
     State& st = *state_;
@@ -362,7 +415,7 @@ void CpuPatchSampler::sampleOnPool(std::span<const Body> bodies, std::span<Conta
   for (size_t i = 0; i < contacts.size(); ++i)
     if (!reused_[i]) patch::prepareMeshes(*meshes_, bodies, contacts[i], false);
   while (worker_states_.size() < static_cast<size_t>(pool_->concurrency()))
-    worker_states_.push_back(std::make_unique<State>(*meshes_, *tables_, options_));
+    worker_states_.push_back(std::make_unique<State>(*meshes_, *tables_, options_, *heights_));
   for (auto& st : worker_states_) {
     st->patch_ms = st->averaging_ms = 0.0;
     st->planar_count = 0;

@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "asperity/error.hpp"
 
 namespace asperity::patch {
 
@@ -180,6 +183,38 @@ void PatchReuse::remember(std::span<const Body> bodies, std::span<const Contact>
     keys_.push_back(key);
     samples_.push_back(old != kNone ? next_samples_[old]
                                     : record(bodies, contacts[i], margins_[i]));
+  }
+}
+
+void PatchReuse::save(StateWriter& out) const {
+  out.putBytes(&settings_, sizeof(settings_));
+  out.put(tolerance_);
+  out.put<uint64_t>(keys_.size());
+  for (size_t i = 0; i < keys_.size(); ++i) {
+    const auto& [a, b, shape_a, shape_b, key] = keys_[i];
+    out.put(a), out.put(b), out.put(shape_a), out.put(shape_b), out.put(key);
+    // A sample is numbers only (points, depths, coefficients, counts): its bytes as they are.
+    out.putBytes(&samples_[i], sizeof(Sample));
+  }
+}
+
+void PatchReuse::load(StateReader& in) {
+  in.getBytes(&settings_, sizeof(settings_));
+  tolerance_ = in.get<double>();
+  const size_t count = in.count(sizeof(Sample));
+  keys_.resize(count);
+  samples_.resize(count);
+  for (size_t i = 0; i < count; ++i) {
+    auto& [a, b, shape_a, shape_b, key] = keys_[i];
+    a = in.get<BodyId>(), b = in.get<BodyId>();
+    shape_a = in.get<int>(), shape_b = in.get<int>();
+    key = in.get<uint64_t>();
+    in.getBytes(static_cast<void*>(&samples_[i]), sizeof(Sample));
+    // A kept sample's coefficients are copied into contacts as they are: their count must be
+    // one a contact can hold.
+    if (samples_[i].mu.count < 0 || samples_[i].mu.count > kMaxDirections)
+      throw Error("the state's kept patch sample " + std::to_string(i) + " has " +
+                  std::to_string(samples_[i].mu.count) + " directions");
   }
 }
 

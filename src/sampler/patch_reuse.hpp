@@ -22,6 +22,7 @@
 
 #include "asperity/collision/contact.hpp"
 #include "asperity/dynamics/body.hpp"
+#include "asperity/math/state_stream.hpp"
 #include "asperity/sampler/friction_provider.hpp"
 #include "sampler/patch_raster.hpp"
 
@@ -41,6 +42,10 @@ class PatchReuse {
   // the reused ones' original record and forgets the contacts that are gone.
   void remember(std::span<const Body> bodies, std::span<const Contact> contacts,
                 std::span<const uint8_t> reused);
+  // The kept samples and the settings they were taken with, saved and restored bit for bit
+  // (World::saveState).
+  void save(StateWriter& out) const;
+  void load(StateReader& in);
 
  private:
   using Key = std::tuple<BodyId, BodyId, int, int, uint64_t>;

@@ -75,6 +75,22 @@ GeneratorSpec parseGenerator(JsonReader r, const std::string& base_dir) {
   return spec;
 }
 
+// "height_map": FILE and "height_scale" (SPEC 13) stand in for a normal map: the generator
+// height_map over the surface's texture_size.
+void parseHeightMap(JsonReader& r, const std::string& base_dir, Surface& s) {
+  const double scale = r.number("height_scale", 0.0, Range::closed(0.0, 1e3));
+  if (!r.has("height_map")) {
+    if (r.has("height_scale")) r.failAt("height_scale", "given without a height_map");
+    return;
+  }
+  if (r.has("normal_map")) r.failAt("height_map", "give either normal_map or height_map, not both");
+  GeneratorSpec& spec = s.source.generator;
+  spec.name = "height_map";
+  spec.params["file"] = existingFile(r, "height_map", base_dir);
+  spec.params["height_scale"] = formatNumber(scale);
+  spec.params["texture_size"] = formatNumber(s.texture_size);
+}
+
 }  // namespace
 
 // "surface": the normal map (file or generator), its mapping, gain k and mask (SPEC 3, 6), and
@@ -94,6 +110,7 @@ Surface parseSurface(JsonReader r, const std::string& base_dir) {
   s.source.green = r.boolean("directx", false) ? GreenConvention::DirectX : GreenConvention::OpenGL;
   s.gain = r.number("gain", s.gain, Range::closed(0.0, 1e4));
   s.texture_size = r.number("texture_size", s.texture_size, Range::positive(kHuge));
+  parseHeightMap(r, base_dir, s);
   s.texture_rotation =
       radiansFromDegrees(r.number("texture_rotation_deg", 0.0, Range::closed(-1e6, 1e6)));
   if (r.has("mask")) s.source.mask_file = existingFile(r, "mask", base_dir);
@@ -241,14 +258,53 @@ BodyDesc parseBody(JsonReader r, SceneDesc& scene, size_t index) {
 
 }  // namespace
 
+namespace {
+
+// "mechanical": a preset's name, or {"E": Pa, "nu": 1, "H": Pa (0 = no plastic limit),
+// "tau": Pa}. Absent: none.
+std::optional<Mechanical> parseMechanical(JsonReader& r, const std::string& key) {
+  if (!r.has(key)) return std::nullopt;
+  const nlohmann::json& v = r.value().at(key);
+  if (v.is_string()) {
+    const std::string name = r.string(key, "");
+    for (const Mechanical& p : mechanicalPresets())
+      if (p.name == name) return p;
+    std::string known;
+    for (const Mechanical& p : mechanicalPresets()) known += (known.empty() ? "" : ", ") + p.name;
+    r.failAt(key, "unknown mechanical preset \"" + name + "\" (known: " + known + ")");
+  }
+  if (!v.is_object())
+    r.failAt(key, "must be a preset name or {\"E\", \"nu\", \"H\", \"tau\"}, got " +
+                      describeValue(v));
+  JsonReader o = r.object(key);
+  constexpr double kPascals = 1e13;  // above any solid's modulus (diamond: 1.2e12 Pa)
+  Mechanical m;
+  m.name = "custom";
+  m.modulus = o.requiredNumber("E", Range::positive(kPascals));
+  m.poisson = o.requiredNumber("nu", Range::closed(0.0, 0.5));
+  m.hardness = o.number("H", 0.0, Range::nonNegative(kPascals));
+  m.shear = o.requiredNumber("tau", Range::positive(kPascals));
+  o.finish();
+  return m;
+}
+
+}  // namespace
+
 void parseMaterials(JsonReader& root, SceneDesc& scene) {
   JsonReader table = root.object("materials");
   for (const auto& entry : table.value().items()) {
     const std::string& name = entry.key();
     if (name.empty()) table.failAt(name, "a material needs a non-empty name");
     // Each entry is a surface object; the shapes that name it keep the name for saving.
-    const JsonReader surface = table.object(name);
+    JsonReader entry_reader = table.object(name);
     SceneMaterial& m = scene.materials[name];
+    m.mechanical = parseMechanical(entry_reader, "mechanical");
+    // The rest of the entry is a surface.
+    nlohmann::json rest = entry_reader.value();
+    rest.erase("mechanical");
+    const JsonReader surface = m.mechanical
+                                   ? JsonReader(rest, entry_reader.file(), entry_reader.pointer())
+                                   : entry_reader;
     m.names_base_color = surface.value().contains("base_color");
     m.surface = parseSurface(surface, scene.base_dir);
     m.surface.source.material = name;

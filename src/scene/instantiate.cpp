@@ -199,13 +199,53 @@ void createConnections(const SceneDesc& scene, World& world) {
   }
 }
 
+// The mechanical values of the material a surface names; throws where there are none.
+Mechanical mechanicalOf(const SceneDesc& scene, const Surface& surface) {
+  const std::string& name = surface.source.material;
+  const auto found = scene.materials.find(name);
+  if (found != scene.materials.end() && found->second.mechanical) return *found->second.mechanical;
+  throw Error("friction_model contact_area needs every surface to name a material with "
+              "\"mechanical\" values (E, nu, H, tau)" +
+              (name.empty() ? std::string(", this one names none")
+                            : "; material \"" + name + "\" has none"));
+}
+
+// The contact-area model's provider: the cpu sampler with each shape's mechanical values from
+// the material its surface names (body and shape indices are the world's: bodies are created
+// in scene order). Throws, naming the setting or the shape, where they do not fit the model.
+std::unique_ptr<FrictionProvider> contactAreaProvider(const SceneDesc& scene) {
+  withContext(scene, "/settings/friction_model", [&] {
+    if (scene.friction_provider != "cpu")
+      throw Error("contact_area needs friction_provider \"cpu\", got \"" +
+                  scene.friction_provider + "\"");
+  });
+  CpuSamplerOptions options;
+  ContactAreaOptions& area = options.contact_area;
+  area.model = FrictionModel::ContactArea;
+  area.dt = scene.settings.dt / scene.settings.substeps;  // the impulse the solver keeps
+  for (size_t i = 0; i < scene.bodies.size(); ++i) {
+    const std::vector<Shape>& shapes = scene.bodies[i].shapes;
+    for (size_t k = 0; k < shapes.size(); ++k) {
+      const std::string pointer =
+          "/bodies/" + std::to_string(i) + "/shapes/" + std::to_string(k) + "/surface";
+      area.mechanical[{static_cast<int>(i), static_cast<int>(k)}] =
+          withContext(scene, pointer, [&] { return mechanicalOf(scene, shapes[k].surface); });
+    }
+  }
+  return std::make_unique<CpuPatchSampler>(options);
+}
+
 }  // namespace
 
 std::unique_ptr<World> instantiate(const SceneDesc& scene, const InstantiateOptions& options) {
   auto world = std::make_unique<World>(scene.settings);
-  world->setFrictionProvider(withContext(scene, "/settings/friction_provider", [&] {
-    return options.providers.make(scene.friction_provider);
-  }));
+  if (scene.friction_model == FrictionModel::ContactArea) {
+    world->setFrictionProvider(contactAreaProvider(scene));
+  } else {
+    world->setFrictionProvider(withContext(scene, "/settings/friction_provider", [&] {
+      return options.providers.make(scene.friction_provider);
+    }));
+  }
   // What loading the scene found comes first among the world's warnings.
   for (const std::string& warning : scene.warnings) world->diagnostics().warn(warning);
   // Bodies, with equal surfaces and meshes sharing one resolved copy (across worlds too when

@@ -80,6 +80,8 @@ void parseSettings(JsonReader r, SceneDesc& scene) {
   scene.friction_provider = r.string(provider, scene.friction_provider);
   if (scene.friction_provider.empty())
     r.failAt(provider, "must be a friction provider name, got \"\"");
+  scene.friction_model = r.enumeration("friction_model", scene.friction_model,
+                                       EnumNames<FrictionModel>(kFrictionModelNames));
   r.finish();
 }
 

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "asperity/error.hpp"
+#include "asperity/math/atomic_file.hpp"
 #include "asperity/scene/scene.hpp"
 #include "scene/scene_common.hpp"
 
@@ -49,6 +50,12 @@ json surfaceToJson(const Surface& s) {
   json out = json::object();
   if (!s.source.normal_map_file.empty()) {
     out["normal_map"] = s.source.normal_map_file;
+  } else if (s.source.generator.name == "height_map") {
+    // Written as read: the file and its scale (texture_size is the surface's own).
+    const auto& params = s.source.generator.params;
+    out["height_map"] = params.at("file");
+    if (params.count("height_scale") && std::stod(params.at("height_scale")) > 0.0)
+      out["height_scale"] = std::stod(params.at("height_scale"));
   } else if (!s.source.generator.name.empty()) {
     out["normal_map"] = {{"generator", s.source.generator.name},
                          {"params", paramsToJson(s.source.generator)},
@@ -160,7 +167,19 @@ json settingsToJson(const SceneDesc& scene) {
           {"patch_width", f.patch_width},
           {"patch_resolution", f.patch_resolution},
           {"reuse_pixels", f.reuse_pixels},
-          {"friction_provider", scene.friction_provider}};
+          {"friction_provider", scene.friction_provider},
+          {"friction_model", enumName(scene.friction_model,
+                                      EnumNames<FrictionModel>(kFrictionModelNames))}};
+}
+
+// A material's mechanical values: the preset's name while they equal it, else the numbers.
+json mechanicalToJson(const Mechanical& m) {
+  for (const Mechanical& p : mechanicalPresets()) {
+    if (p.name == m.name && p.modulus == m.modulus && p.poisson == m.poisson &&
+        p.hardness == m.hardness && p.shear == m.shear)
+      return m.name;
+  }
+  return {{"E", m.modulus}, {"nu", m.poisson}, {"H", m.hardness}, {"tau", m.shear}};
 }
 
 // "materials": each entry as a surface, its base colour only when it gave one.
@@ -169,6 +188,7 @@ json materialsToJson(const SceneDesc& scene) {
   for (const auto& [name, material] : scene.materials) {
     out[name] = surfaceToJson(material.surface);
     if (!material.names_base_color) out[name].erase("base_color");
+    if (material.mechanical) out[name]["mechanical"] = mechanicalToJson(*material.mechanical);
   }
   return out;
 }
@@ -293,11 +313,22 @@ nlohmann::json sceneToJson(const SceneDesc& scene) {
 void saveScene(const SceneDesc& scene, const std::string& path) {
   SceneDesc copy = scene;
   scene::rebaseScene(copy, scene::parentFolder(path));
-  const std::string text = sceneToJson(copy).dump(2) + "\n";
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw Error(path + ": cannot open file for writing");
-  out << text;
-  if (!out) throw Error(path + ": write failed");
+  writeFileAtomically(path, sceneToJson(copy).dump(2) + "\n");
+}
+
+uint64_t sceneStateId(const SceneDesc& scene) {
+  // Neither the thread count nor the provider changes which scene this is: the provider is
+  // checked on its own (World::loadState names it), threads change no result (SPEC 9).
+  SceneDesc copy = scene;
+  copy.settings.threads = 0;
+  copy.friction_provider.clear();
+  const std::string text = sceneToJson(copy).dump();
+  uint64_t hash = 1469598103934665603ull;
+  for (const unsigned char c : text) {
+    hash ^= c;
+    hash *= 1099511628211ull;
+  }
+  return hash ^ scene.bodies.size();
 }
 
 }  // namespace asperity

@@ -174,6 +174,14 @@ const ContactSolver::Cached* ContactSolver::findCached(const Contact& c, size_t&
   return &cache_[hit];
 }
 
+void ContactSolver::previousNormalImpulses(std::span<Contact> contacts) const {
+  size_t cursor = 0;
+  for (Contact& c : contacts) {
+    const Cached* hit = findCached(c, cursor);
+    c.lambda_n = hit != nullptr ? hit->lambda_n : 0.0;
+  }
+}
+
 void ContactSolver::warmStartRow(const Cached& cached, ContactRow& row, size_t slot) const {
   // Same contact last step: reuse its impulses, the tangential one re-expressed in this
   // step's frame and projected on this step's limit surface.

@@ -132,6 +132,30 @@ void ContactSolver::finish(std::span<Body> bodies, std::span<Contact> contacts) 
   storeJointImpulses();
 }
 
+void ContactSolver::saveWarmStart(StateWriter& out) const {
+  out.put<uint64_t>(cache_.size());
+  for (const Cached& c : cache_) {
+    out.put(c.a);
+    out.put(c.b);
+    out.put(c.key);
+    out.put(c.lambda_n);
+    for (int k = 0; k < 3; ++k) out.put(c.tangential[k]);
+  }
+  out.putVector(joint_lambda_);
+}
+
+void ContactSolver::loadWarmStart(StateReader& in) {
+  cache_.resize(in.count(sizeof(Cached::a) + sizeof(Cached::b) + 5 * sizeof(double)));
+  for (Cached& c : cache_) {
+    c.a = in.get<BodyId>();
+    c.b = in.get<BodyId>();
+    c.key = in.get<uint64_t>();
+    c.lambda_n = in.get<double>();
+    for (int k = 0; k < 3; ++k) c.tangential[k] = in.get<double>();
+  }
+  in.getVector(joint_lambda_);
+}
+
 void ContactSolver::forgetWarmStart() {
   cache_.clear();
   std::fill(joint_lambda_.begin(), joint_lambda_.end(), 0.0);

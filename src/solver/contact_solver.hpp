@@ -27,6 +27,7 @@
 #include "asperity/dynamics/body.hpp"
 #include "asperity/dynamics/joint.hpp"
 #include "asperity/friction/limit_surface.hpp"
+#include "asperity/math/state_stream.hpp"
 #include "asperity/math/types.hpp"
 #include "math/lanes.hpp"
 
@@ -95,8 +96,16 @@ class ContactSolver {
   // Writes velocities and impulses back and remembers them for the next step's warm start.
   void finish(std::span<Body> bodies, std::span<Contact> contacts);
 
+  // Each contact's normal impulse of the last step, as its warm start finds it (0 for a new
+  // contact), into its lambda_n before this step's friction: the load of the contact-area
+  // friction model (docs/contact-area.md). The solve overwrites it.
+  void previousNormalImpulses(std::span<Contact> contacts) const;
   // Forgets the impulses kept for warm starting (contacts and joints), as in a new solver.
   void forgetWarmStart();
+  // The kept impulses (contacts by key, joints), saved and restored bit for bit
+  // (World::saveState): a restored solver warm-starts exactly as the saved one would have.
+  void saveWarmStart(StateWriter& out) const;
+  void loadWarmStart(StateReader& in);
   // The pool of setThreadPool (null: the calling thread only).
   const ThreadPool* threadPool() const { return pool_; }
   // Current solver velocities of a body (world frame), and of all bodies by BodyId.

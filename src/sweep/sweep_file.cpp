@@ -2,18 +2,14 @@
 // Rows go out with one write(2) each, straight to the kernel: a killed process leaves whole
 // rows only. The journal beside the file names the sweep, so that a resume with other
 // arguments is refused instead of mixing two sweeps in one table.
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "asperity/error.hpp"
+#include "asperity/math/atomic_file.hpp"
 #include "asperity/sweep/sweep.hpp"
 
 namespace asperity {
@@ -54,54 +50,17 @@ nlohmann::json journalOf(const Sweep& sweep) {
   throw SweepFileError(path + ": " + what);
 }
 
-// The whole of `text` written to `fd`, or an error naming the file and the reason.
-void writeAll(int fd, const std::string& text, const std::string& path) {
-  size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) failOn(path, std::string("write failed: ") + std::strerror(errno));
-    done += static_cast<size_t>(n);
+// The journal written atomically (a temporary file renamed into place), and the table's
+// rows each with one write(2): asperity/math/atomic_file.hpp, its errors as SweepFileError.
+template <typename F>
+auto sweepFileCall(F&& call) {
+  try {
+    return call();
+  } catch (const SweepFileError&) {
+    throw;
+  } catch (const Error& e) {
+    throw SweepFileError(e.what());
   }
-}
-
-// An open file descriptor, closed on every path out.
-class File {
- public:
-  File(const std::string& path, int flags) : path_(path), fd_(::open(path.c_str(), flags, 0644)) {
-    if (fd_ < 0) failOn(path, std::string("cannot open for writing: ") + std::strerror(errno));
-  }
-  ~File() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  File(const File&) = delete;
-  File& operator=(const File&) = delete;
-  void write(const std::string& text) const { writeAll(fd_, text, path_); }
-  bool regular() const {
-    struct stat st {};
-    return ::fstat(fd_, &st) == 0 && S_ISREG(st.st_mode);
-  }
-  // Written to the disk, not only to the kernel (at the end of a sweep).
-  void sync() const {
-    if (regular() && ::fsync(fd_) != 0)
-      failOn(path_, std::string("write failed: ") + std::strerror(errno));
-  }
-
- private:
-  std::string path_;
-  int fd_;
-};
-
-// The journal written atomically: a temporary file renamed into place.
-void writeJournal(const std::string& path, const std::string& journal) {
-  const std::string temporary = path + ".tmp";
-  {
-    File file(temporary, O_WRONLY | O_CREAT | O_TRUNC);
-    file.write(journal);
-    file.sync();
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0)
-    failOn(path, std::string("cannot write: ") + std::strerror(errno));
 }
 
 std::string readText(const std::string& path) {
@@ -177,16 +136,17 @@ int64_t runSweepToFile(const Sweep& sweep, const SweepFileOptions& options) {
     first = resumePoint(sweep, path, journal);
     if (first < 0) return 0;
   }
-  const File out(path, O_WRONLY | O_CREAT | (options.resume ? O_APPEND : O_TRUNC));
+  auto out = sweepFileCall([&] { return std::make_unique<RecordFile>(path, "", options.resume); });
   // Only a regular file can be resumed, so only it gets a journal (not /dev/stdout).
-  const bool journaled = out.regular();
+  const bool journaled = out->regular();
   if (!options.resume) {
-    out.write(sweep.csvHeader());
-    if (journaled) writeJournal(journal, sweepJournal(sweep));
+    sweepFileCall([&] { out->append(sweep.csvHeader()); });
+    if (journaled) sweepFileCall([&] { writeFileAtomically(journal, sweepJournal(sweep)); });
   }
-  sweep.runInOrder(options.threads, first,
-                   [&](const SampleResult& r) { out.write(sweep.csvRow(r)); });
-  out.sync();
+  sweep.runInOrder(options.threads, first, [&](const SampleResult& r) {
+    sweepFileCall([&] { out->append(sweep.csvRow(r)); });
+  });
+  sweepFileCall([&] { out->sync(); });
   std::error_code ignored;  // a journal left behind only allows a (no-op) resume
   if (journaled) std::filesystem::remove(journal, ignored);
   return sweep.desc().samples - first;

@@ -8,6 +8,7 @@
 #include "asperity/error.hpp"
 #include "asperity/math/types.hpp"
 #include "asperity/texture/png_io.hpp"
+#include "texture/height_field.hpp"
 
 namespace asperity::texgen {
 
@@ -142,6 +143,14 @@ GeneratorParam numberParam(std::string name, double default_value, double min, d
 GeneratorParam axisParam(std::string default_value, std::string doc) {
   return {"axis", "number", std::move(default_value),
           -360.0, 360.0,    std::move(doc) + " ('u' = 0, 'v' = 90, or degrees from +u toward +v)"};
+}
+
+GeneratorEntry heightEntry(GeneratorInfo info,
+                           std::function<Field(const GeneratorContext&)> heights) {
+  auto make = [heights](const GeneratorContext& ctx) {
+    return normalsFromHeights(heights(ctx), 1.0, Edge::Wrap);
+  };
+  return {std::move(info), std::move(make), std::move(heights)};
 }
 
 GeneratorParam pathParam(std::string name, std::string doc) {

@@ -56,11 +56,19 @@ class GeneratorContext {
   uint64_t seed_ = 0;
 };
 
-// One catalog entry: the documentation and the function that builds the map.
+struct Field;  // height_field.hpp
+
+// One catalog entry: the documentation, the function that builds the map and, for generators
+// built on a height field, the function that gives those heights (texel units: a height of 1
+// is one texel's width). Empty `heights`: the generator has no height field.
 struct GeneratorEntry {
   GeneratorInfo info;
   std::function<NormalMap(const GeneratorContext&)> make;
+  std::function<Field(const GeneratorContext&)> heights;
 };
+
+// An entry whose map is the central-difference normals (wrapping) of its heights.
+GeneratorEntry heightEntry(GeneratorInfo info, std::function<Field(const GeneratorContext&)> heights);
 
 // Parameter declaration helpers for the catalog tables.
 GeneratorParam numberParam(std::string name, double default_value, double min, double max,

@@ -30,13 +30,13 @@ Field streaks(int n, Rng& rng, int length) {
   return f;
 }
 
-// Scales to the target slope, turns the texture toward `axis` and takes normals.
-NormalMap finish(Field heights, double rms_slope, double axis) {
+// Scales to the target slope and turns the texture toward `axis` (heightEntry takes normals).
+Field finish(Field heights, double rms_slope, double axis) {
   scaleToRmsSlope(heights, rms_slope, Edge::Wrap);
   if (axis != 0.0) {
     heights = rotated(heights, axis);
   }
-  return normalsFromHeights(heights, 1.0, Edge::Wrap);
+  return heights;
 }
 
 // a += w * b, with b first scaled to unit rms slope.
@@ -45,13 +45,13 @@ void addScaled(Field& a, Field b, double w) {
   for (size_t k = 0; k < a.values.size(); ++k) a.values[k] += w * b.values[k];
 }
 
-NormalMap makeIsotropic(const GeneratorContext& ctx, int radius) {
+Field makeIsotropic(const GeneratorContext& ctx, int radius) {
   Rng rng(ctx.seed());
   return finish(bumps(ctx.size(), rng, radius), ctx.number("slope"), 0.0);
 }
 
 // oak: fibres (streaks along the grain) plus growth rings (waves across it that wander).
-NormalMap makeOak(const GeneratorContext& ctx) {
+Field makeOak(const GeneratorContext& ctx) {
   const int n = ctx.size();
   const double ring_period = ctx.number("ring_period");
   Rng rng(ctx.seed());
@@ -75,7 +75,7 @@ NormalMap makeOak(const GeneratorContext& ctx) {
 }
 
 // cut_pvc: tool marks across the axis (asymmetric grooves of random depth) plus fine noise.
-NormalMap makeCutPvc(const GeneratorContext& ctx) {
+Field makeCutPvc(const GeneratorContext& ctx) {
   const int n = ctx.size();
   const double period = ctx.number("mark_period");
   const double rise = std::tan(ctx.number("mark_angle") * kPi / 180.0);
@@ -100,11 +100,11 @@ NormalMap makeCutPvc(const GeneratorContext& ctx) {
   if (const double axis = ctx.axisRadians("axis"); axis != 0.0) {
     heights = rotated(heights, axis);
   }
-  return normalsFromHeights(heights, 1.0, Edge::Wrap);
+  return heights;
 }
 
 // stone: octaves of bumps of radius 1, 2, 4, ..., each contributing equal slope.
-NormalMap makeStone(const GeneratorContext& ctx) {
+Field makeStone(const GeneratorContext& ctx) {
   const int n = ctx.size();
   Rng rng(ctx.seed());
   Field heights(n, n);
@@ -115,7 +115,7 @@ NormalMap makeStone(const GeneratorContext& ctx) {
 }
 
 // metal: brushed, fine scratches along the axis.
-NormalMap makeMetal(const GeneratorContext& ctx) {
+Field makeMetal(const GeneratorContext& ctx) {
   Rng rng(ctx.seed());
   Field heights = streaks(ctx.size(), rng, ctx.integer("streak_length"));
   return finish(std::move(heights), ctx.number("slope"), ctx.axisRadians("axis"));
@@ -130,10 +130,10 @@ GeneratorParam slopeParam(double value) {
 
 std::vector<GeneratorEntry> materialGenerators() {
   std::vector<GeneratorEntry> e;
-  e.push_back({{"acrylic", "acrylic: near-flat, tiny fine noise (Fig. 15)", {slopeParam(0.01)}},
-               [](const GeneratorContext& ctx) { return makeIsotropic(ctx, 1); }});
-  e.push_back(
-      {{"oak",
+  e.push_back(heightEntry({"acrylic", "acrylic: near-flat, tiny fine noise (Fig. 15)", {slopeParam(0.01)}},
+               [](const GeneratorContext& ctx) { return makeIsotropic(ctx, 1); }));
+  e.push_back(heightEntry(
+      {"oak",
         "oak: grain along the axis (slopes across the grain much larger than along it) with "
         "wandering growth-ring streaks (Fig. 15)",
         {slopeParam(0.25),
@@ -141,38 +141,38 @@ std::vector<GeneratorEntry> materialGenerators() {
          numberParam("ring_period", 20, 2, 8192, "spacing of growth rings (texels)"),
          numberParam("ring_share", 0.5, 0, 1, "fraction of the slope from rings (-)"),
          axisParam("0", "grain direction")}},
-       makeOak});
-  e.push_back({{"cut_pvc",
+       makeOak));
+  e.push_back(heightEntry({"cut_pvc",
                 "cut PVC: tool marks across the axis (asymmetric grooves of random depth) and fine "
                 "noise; the roughest of acrylic < oak < cut_pvc (Fig. 15)",
                 {numberParam("mark_period", 8, 2, 1024, "tool mark spacing (texels)"),
                  numberParam("mark_angle", 20, 0, 80, "tilt of the long face of a mark (degrees)"),
                  numberParam("noise_slope", 0.15, 0, 10, "rms slope of the fine noise (-)"),
                  axisParam("0", "direction across the marks")}},
-               makeCutPvc});
-  e.push_back(
-      {{"plaster",
+               makeCutPvc));
+  e.push_back(heightEntry(
+      {"plaster",
         "plaster: smooth-ish isotropic bumps (Fig. 9's boxes)",
         {slopeParam(0.2),
          numberParam("bump_radius", 3, 1, 256, "bump radius, a whole number (texels)")}},
-       [](const GeneratorContext& ctx) { return makeIsotropic(ctx, ctx.integer("bump_radius")); }});
-  e.push_back(
-      {{"stone",
+       [](const GeneratorContext& ctx) { return makeIsotropic(ctx, ctx.integer("bump_radius")); }));
+  e.push_back(heightEntry(
+      {"stone",
         "stone: rough isotropic multi-scale bumps (Fig. 16)",
         {slopeParam(0.8), numberParam("octaves", 5, 1, 8, "number of scales, a whole number (-)")}},
-       makeStone});
-  e.push_back(
-      {{"metal",
+       makeStone));
+  e.push_back(heightEntry(
+      {"metal",
         "metal: brushed, fine anisotropic scratches, low (Fig. 16)",
         {slopeParam(0.08),
          numberParam("streak_length", 48, 1, 8192, "scratch length, a whole number (texels)"),
          axisParam("0", "brushing direction")}},
-       makeMetal});
-  e.push_back({{"plastic",
+       makeMetal));
+  e.push_back(heightEntry({"plastic",
                 "plastic: smooth, very low bumps (Fig. 16); slope 0 is the perfectly smooth "
                 "plastic of Fig. 9 (Ra = 0)",
                 {slopeParam(0.02)}},
-               [](const GeneratorContext& ctx) { return makeIsotropic(ctx, 4); }});
+               [](const GeneratorContext& ctx) { return makeIsotropic(ctx, 4); }));
   return e;
 }
 

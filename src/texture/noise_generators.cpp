@@ -33,6 +33,14 @@ NormalMap roughnessMap(const GeneratorContext& ctx, double ra_mm) {
   return normalsFromHeights(heights, 1.0 / texel_mm, Edge::Wrap);
 }
 
+// The same heights in texel units (normals by central differences give roughnessMap).
+Field roughnessTexels(const GeneratorContext& ctx, double ra_mm) {
+  Field heights = roughnessHeightsMm(ra_mm, ctx.size(), ctx.seed());
+  const double per_texel = 1.0 / ctx.number("texel_mm");
+  for (double& h : heights.values) h *= per_texel;
+  return heights;
+}
+
 GeneratorParam texelParam() {
   return numberParam("texel_mm", 1.0, 1e-3, 1e3, "width of one texel (mm)");
 }
@@ -40,7 +48,8 @@ GeneratorParam texelParam() {
 // A fixed-Ra preset of the roughness generator (Sec. 5.1's materials).
 GeneratorEntry preset(const std::string& name, double ra_mm, const std::string& doc) {
   return {{name, doc, {texelParam()}},
-          [ra_mm](const GeneratorContext& ctx) { return roughnessMap(ctx, ra_mm); }};
+          [ra_mm](const GeneratorContext& ctx) { return roughnessMap(ctx, ra_mm); },
+          [ra_mm](const GeneratorContext& ctx) { return roughnessTexels(ctx, ra_mm); }};
 }
 
 }  // namespace
@@ -64,14 +73,15 @@ std::vector<GeneratorEntry> noiseGenerators() {
         "m = normalize(-s_x, -s_y, 1) (Fig. 8)",
         {numberParam("sx", 1.0, 0.0, 100.0, "standard deviation of the slope along u (-)"),
          numberParam("sy", 1.0, 0.0, 100.0, "standard deviation of the slope along v (-)")}},
-       makeGaussian});
+       makeGaussian, nullptr});  // independent slopes: no height field
   entries.push_back(
       {{"roughness",
         "i.i.d. Gaussian heights per texel with mean absolute deviation Ra, normals by "
         "central differences (wrap-around) (Sec. 5.1)",
         {numberParam("ra_mm", 0.15, 0.0, 100.0, "mean absolute height deviation Ra (mm)"),
          texelParam()}},
-       [](const GeneratorContext& ctx) { return roughnessMap(ctx, ctx.number("ra_mm")); }});
+       [](const GeneratorContext& ctx) { return roughnessMap(ctx, ctx.number("ra_mm")); },
+       [](const GeneratorContext& ctx) { return roughnessTexels(ctx, ctx.number("ra_mm")); }});
   entries.push_back(preset("concrete", 1.0, "concrete: roughness with Ra = 1 mm (Sec. 5.1)"));
   entries.push_back(preset("cast_iron", 0.15, "cast iron: roughness with Ra = 0.15 mm (Sec. 5.1)"));
   entries.push_back(preset("steel", 0.01, "steel: roughness with Ra = 0.01 mm (Sec. 5.1)"));

@@ -15,6 +15,7 @@
 #include <zlib.h>
 
 #include "asperity/error.hpp"
+#include "asperity/math/atomic_file.hpp"
 #include "asperity/texture/png_io.hpp"
 
 #pragma GCC diagnostic push
@@ -183,7 +184,7 @@ Image decode(const std::vector<uint8_t>& bytes, const std::string& path, int max
 }
 
 void write(const std::string& path, int width, int height, int channels, int bits,
-           const std::vector<uint16_t>& samples) {
+           const std::vector<uint16_t>& samples, const std::vector<TextEntry>& text) {
   // Raw scanlines: filter byte 0 (None), then big-endian samples.
   const size_t bytes_per_sample = bits == 16 ? 2 : 1;
   const size_t row_bytes = 1 + static_cast<size_t>(width) * channels * bytes_per_sample;
@@ -216,14 +217,42 @@ void write(const std::string& path, int width, int height, int channels, int bit
                                      : kGrey;
   ihdr.insert(ihdr.end(), {static_cast<uint8_t>(bits), static_cast<uint8_t>(colour), 0, 0, 0});
   appendChunk(out, "IHDR", ihdr.data(), ihdr.size());
+  for (const TextEntry& entry : text) {
+    // tEXt: keyword, a zero byte, then the text.
+    if (entry.key.empty() || entry.key.size() > 79) fail(path, "bad text key '" + entry.key + "'");
+    std::vector<uint8_t> data(entry.key.begin(), entry.key.end());
+    data.push_back(0);
+    data.insert(data.end(), entry.text.begin(), entry.text.end());
+    appendChunk(out, "tEXt", data.data(), data.size());
+  }
   appendChunk(out, "IDAT", compressed.get(), static_cast<size_t>(compressed_size));
   appendChunk(out, "IEND", nullptr, 0);
-  // Write the file.
-  std::ofstream file(path, std::ios::binary);
-  file.write(reinterpret_cast<const char*>(out.data()), static_cast<std::streamsize>(out.size()));
-  if (!file) {
-    fail(path, "cannot write");
+  // Written whole under a temporary name, then renamed (asperity/math/atomic_file.hpp).
+  try {
+    writeFileAtomically(path, {reinterpret_cast<const char*>(out.data()), out.size()});
+  } catch (const Error& e) {
+    // The helper's "PATH: reason" without the path, which fail() names itself.
+    const std::string reason = e.what();
+    fail(path, "cannot write (" + reason.substr(reason.find(": ") + 2) + ")");
   }
+}
+
+std::vector<TextEntry> readText(const std::vector<uint8_t>& bytes) {
+  // The chunk walk of inspect(), trusting its checks; a keyword without its zero byte is skipped.
+  std::vector<TextEntry> entries;
+  for (size_t pos = kSignature.size(); pos + 12 <= bytes.size();) {
+    const uint32_t length = readBigEndian32(&bytes[pos]);
+    const std::string type(reinterpret_cast<const char*>(&bytes[pos + 4]), 4);
+    if (type == "IEND" || bytes.size() - pos - 12 < length) break;
+    if (type == "tEXt") {
+      const auto* first = reinterpret_cast<const char*>(&bytes[pos + 8]);
+      const std::string data(first, length);
+      if (const size_t zero = data.find('\0'); zero != std::string::npos)
+        entries.push_back({data.substr(0, zero), data.substr(zero + 1)});
+    }
+    pos += 12 + length;
+  }
+  return entries;
 }
 
 bool isPng(const std::vector<uint8_t>& bytes) {

@@ -50,9 +50,19 @@ bool isPng(const std::vector<uint8_t>& bytes);
 Image decodeAny(const std::vector<uint8_t>& bytes, const std::string& path, int max_size,
                 int channels);
 
+// One tEXt chunk: a Latin-1 keyword (1 to 79 characters) and its text.
+struct TextEntry {
+  std::string key;
+  std::string text;
+};
+
 // Writes an 8- or 16-bit RGB / RGBA / grey image, rows top to bottom; samples are the raw
-// integer values (0..255 or 0..65535). Throws asperity::Error naming `path`.
+// integer values (0..255 or 0..65535), with `text` as tEXt chunks before the image data.
+// Throws asperity::Error naming `path`.
 void write(const std::string& path, int width, int height, int channels, int bits,
-           const std::vector<uint16_t>& samples);
+           const std::vector<uint16_t>& samples, const std::vector<TextEntry>& text = {});
+
+// The tEXt chunks of a PNG already checked by inspect(), in file order.
+std::vector<TextEntry> readText(const std::vector<uint8_t>& bytes);
 
 }  // namespace asperity::png

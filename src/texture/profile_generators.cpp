@@ -4,10 +4,12 @@
 // Direction convention (SPEC 1): a facet whose normal tilts toward +a resists a body sliding
 // over it toward -a. The sawtooth's ramps rise toward +axis, so ramp normals tilt toward -axis
 // and steep-face normals toward +axis: sliding toward -axis is "against the steep faces".
+#include <algorithm>
 #include <cmath>
 
 #include "asperity/math/types.hpp"
 #include "texture/generator_support.hpp"
+#include "texture/height_field.hpp"
 #include "texture/profile.hpp"
 
 namespace asperity::texgen {
@@ -46,6 +48,23 @@ NormalMap profileMap(const PeriodicProfile& profile, int size, double axis, doub
   return map;
 }
 
+// The heights under profileMap: the profile's integral at each texel centre (the box filter of
+// profileMap's `window` is not applied).
+Field profileHeights(const PeriodicProfile& profile, int size, double axis, double shear) {
+  const auto snap = [](double c) { return std::abs(c) < 1e-12 ? 0.0 : c; };
+  const double ax = snap(std::cos(axis));
+  const double ay = snap(std::sin(axis));
+  Field heights(size, size);
+  for (int j = 0; j < size; ++j) {
+    for (int i = 0; i < size; ++i) {
+      const double px = i + 0.5;
+      const double py = j + 0.5;
+      heights.at(i, j) = profile.height(ax * px + ay * py + shear * (ay * px - ax * py));
+    }
+  }
+  return heights;
+}
+
 // sawtooth: a ramp of ramp_width * period at ramp_angle rising toward +axis, then a steep face
 // at steep_angle falling over the rest of the period.
 NormalMap makeSawtooth(const GeneratorContext& ctx) {
@@ -56,6 +75,19 @@ NormalMap makeSawtooth(const GeneratorContext& ctx) {
   const PeriodicProfile profile(
       {{ramp_width * period, ramp}, {(1.0 - ramp_width) * period, -steep}});
   return profileMap(profile, ctx.size(), ctx.axisRadians("axis"), 0.0, ctx.number("smoothing"));
+}
+
+// sawtooth's heights. A ramp and a steep face of equal widths do not close (the ridge would
+// climb or fall by (w tan ramp - w' tan steep) each period), so the height field keeps both
+// facet angles and gives the ramp the share tan(steep) / (tan(ramp) + tan(steep)) of the
+// period: the true sawtooth with those facets.
+Field sawtoothHeights(const GeneratorContext& ctx) {
+  const double period = ctx.number("period");
+  const double ramp = std::tan(radians(ctx.number("ramp_angle")));
+  const double steep = std::tan(radians(ctx.number("steep_angle")));
+  const double share = ramp + steep > 0.0 ? steep / (ramp + steep) : 0.5;
+  const PeriodicProfile profile({{share * period, ramp}, {(1.0 - share) * period, -steep}});
+  return profileHeights(profile, ctx.size(), ctx.axisRadians("axis"), 0.0);
 }
 
 // thread: symmetric triangles; flanks at flank_angle from the radial direction (ISO metric:
@@ -69,6 +101,19 @@ NormalMap makeThread(const GeneratorContext& ctx) {
   return profileMap(profile, ctx.size(), ctx.axisRadians("axis"), shear, 0.0);
 }
 
+Field threadHeights(const GeneratorContext& ctx) {
+  const double pitch = ctx.number("pitch_texels");
+  const double slope = 1.0 / std::tan(radians(ctx.number("flank_angle")));
+  const PeriodicProfile profile({{0.5 * pitch, slope}, {0.5 * pitch, -slope}});
+  const double shear = ctx.number("starts") * pitch / ctx.size();
+  return profileHeights(profile, ctx.size(), ctx.axisRadians("axis"), shear);
+}
+
+// Offset of texel `index`'s centre from the nearest cone apex, at (m + 1/2) period.
+double apexOffset(int index, double period) {
+  return std::fmod(index + 0.5, period) - 0.5 * period;
+}
+
 // cones: identical cones on a square grid of `period` texels, base radius base * period, flanks
 // tilted flank_angle from the plane (height tan(alpha) (r0 - r)); normals tilt outward, away from
 // the apex. Outside the cones (and at an apex) the map is flat. The model's value for it is
@@ -77,8 +122,7 @@ NormalMap makeCones(const GeneratorContext& ctx) {
   const double period = ctx.number("period");
   const double radius = ctx.number("base") * period;
   const double slope = std::tan(radians(ctx.number("flank_angle")));
-  // Offset of a texel centre from the nearest apex, at ((m + 1/2) period, (n + 1/2) period).
-  const auto offset = [period](int index) { return std::fmod(index + 0.5, period) - 0.5 * period; };
+  const auto offset = [period](int index) { return apexOffset(index, period); };
   NormalMap map(ctx.size(), ctx.size());
   for (int j = 0; j < ctx.size(); ++j) {
     for (int i = 0; i < ctx.size(); ++i) {
@@ -90,6 +134,19 @@ NormalMap makeCones(const GeneratorContext& ctx) {
     }
   }
   return map;
+}
+
+// cones' heights: tan(alpha) (r0 - r) inside each base, 0 outside.
+Field conesHeights(const GeneratorContext& ctx) {
+  const double period = ctx.number("period");
+  const double radius = ctx.number("base") * period;
+  const double slope = std::tan(radians(ctx.number("flank_angle")));
+  const auto offset = [period](int index) { return apexOffset(index, period); };
+  Field heights(ctx.size(), ctx.size());
+  for (int j = 0; j < ctx.size(); ++j)
+    for (int i = 0; i < ctx.size(); ++i)
+      heights.at(i, j) = slope * std::max(0.0, radius - std::hypot(offset(i), offset(j)));
+  return heights;
 }
 
 }  // namespace
@@ -110,7 +167,8 @@ std::vector<GeneratorEntry> profileGenerators() {
          axisParam("0", "direction toward which the ramps rise"),
          numberParam("smoothing", 0.0, 0.0, 1024.0,
                      "width of a box filter over the slope profile (texels); 0 = sharp")}},
-       makeSawtooth});
+       makeSawtooth,
+       sawtoothHeights});
   entries.push_back(
       {{"thread",
         "screw thread: symmetric triangular profile along the axis, facets facing +axis and "
@@ -123,7 +181,8 @@ std::vector<GeneratorEntry> profileGenerators() {
          numberParam("starts", 0.0, 0.0, 16.0,
                      "helix starts: the profile advances starts * pitch per map width across "
                      "the axis (0 = rings; whole numbers tile seamlessly)")}},
-       makeThread});
+       makeThread,
+       threadHeights});
   entries.push_back(
       {{"cones",
         "identical conical asperities on a square grid (Bowden and Tabor's ploughing cone): "
@@ -134,7 +193,8 @@ std::vector<GeneratorEntry> profileGenerators() {
          numberParam("base", 0.5, 0.0, 0.5,
                      "base radius as a fraction of the period (0.5: neighbours touch); the "
                      "cones cover pi base^2 of the plane")}},
-       makeCones});
+       makeCones,
+       conesHeights});
   return entries;
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "asperity/error.hpp"
+#include "asperity/texture/height_map.hpp"
 #include "asperity/texture/png_io.hpp"
 #include "texture/generator_support.hpp"
 #include "texture/height_field.hpp"
@@ -14,11 +15,9 @@ namespace asperity::texgen {
 
 namespace {
 
-// heightmap: grey level g in [0, 1] -> height g * height_scale texels; the map keeps the
-// file's size, and the picture's border uses one-sided differences (no wrap-around).
-NormalMap makeHeightmap(const GeneratorContext& ctx) {
+// The grey levels g in [0, 1] of heightmap's file, with the file's size.
+Field greyLevels(const GeneratorContext& ctx) {
   const std::string file = ctx.path("file");
-  const double scale = ctx.number("height_scale");
   png::Image image;
   try {
     image = png::decode(png::readFile(file), file, kMaxTextureSize, 1);
@@ -34,7 +33,44 @@ NormalMap makeHeightmap(const GeneratorContext& ctx) {
       heights.at(i, h - 1 - r) = image.samples[static_cast<size_t>(r) * w + i];
     }
   }
-  return normalsFromHeights(heights, scale, Edge::Clamp);
+  return heights;
+}
+
+// heightmap: height g * height_scale texels; the picture's border uses one-sided differences
+// (no wrap-around).
+NormalMap makeHeightmap(const GeneratorContext& ctx) {
+  return normalsFromHeights(greyLevels(ctx), ctx.number("height_scale"), Edge::Clamp);
+}
+
+Field heightmapHeights(const GeneratorContext& ctx) {
+  Field heights = greyLevels(ctx);
+  const double scale = ctx.number("height_scale");
+  for (double& h : heights.values) h *= scale;
+  return heights;
+}
+
+// height_map: a grey PNG of heights at physical scale (SPEC 13), the generator behind a
+// surface's "height_map" key; normals at the texel size texture_size / width.
+HeightMap physicalHeights(const GeneratorContext& ctx) {
+  const std::string file = ctx.path("file");
+  try {
+    return loadHeightMap(file, ctx.number("height_scale"));
+  } catch (const Error& e) {
+    ctx.fail(std::string("parameter 'file': ") + e.what());
+  }
+}
+
+NormalMap makePhysicalHeights(const GeneratorContext& ctx) {
+  return normalsFromHeightMap(physicalHeights(ctx), ctx.number("texture_size"));
+}
+
+// The same heights in texel units.
+Field physicalHeightsTexels(const GeneratorContext& ctx) {
+  const HeightMap map = physicalHeights(ctx);
+  const double per_texel = map.width / ctx.number("texture_size");
+  Field heights(map.width, map.height);
+  for (size_t k = 0; k < map.values.size(); ++k) heights.values[k] = map.values[k] * per_texel;
+  return heights;
 }
 
 // Signed distances in logo units, positive inside each part.
@@ -65,7 +101,7 @@ double teapotInside(double x, double y) {
 
 // emboss: the teapot raised by `height` texels, with linear edges `edge_width` texels wide
 // centred on the outline, on a flat background.
-NormalMap makeEmboss(const GeneratorContext& ctx) {
+Field makeEmboss(const GeneratorContext& ctx) {
   const int n = ctx.size();
   const double height = ctx.number("height");
   const double edge = ctx.number("edge_width");
@@ -80,7 +116,7 @@ NormalMap makeEmboss(const GeneratorContext& ctx) {
       heights.at(i, j) = height * std::clamp(0.5 + inside / edge, 0.0, 1.0);
     }
   }
-  return normalsFromHeights(heights, 1.0, Edge::Wrap);
+  return heights;
 }
 
 }  // namespace
@@ -93,15 +129,27 @@ std::vector<GeneratorEntry> reliefGenerators() {
         "grey); the map has the file's size, and `size` is only range-checked",
         {pathParam("file", "PNG height map: black = 0, white = height_scale"),
          numberParam("height_scale", 4.0, 0.0, 1000.0, "height of white (texels)")}},
-       makeHeightmap});
+       makeHeightmap, heightmapHeights});
   entries.push_back(
-      {{"emboss",
+      {{"height_map",
+        "normals from a grey PNG (8 or 16 bit) or float OpenEXR height map at physical scale: "
+        "heights grey * height_scale metres (EXR: value * height_scale, 0 = 1) over a texture "
+        "texture_size metres wide, central differences "
+        "wrapping (SPEC 13); a surface's \"height_map\" key; the map has the file's size",
+        {pathParam("file", "height map: grey PNG (black = 0, white = height_scale) or .exr"),
+         numberParam("height_scale", 0.0, 0.0, 1e3,
+                     "metres per full grey range (0: the scale stored in the file)"),
+         numberParam("texture_size", 0.25, 1e-9, 1e6,
+                     "metres covered by the map (the surface's texture_size)")}},
+       makePhysicalHeights, physicalHeightsTexels});
+  entries.push_back(heightEntry(
+      {"emboss",
         "a teapot logo raised as a plateau with sloped edges on a flat background (Fig. 16)",
         {numberParam("height", 2.0, 0.0, 1000.0, "plateau height (texels)"),
          numberParam("edge_width", 4.0, 0.5, 1000.0,
                      "width of the sloped edge (texels); edge tilt = atan(height / edge_width)"),
          numberParam("scale", 0.8, 0.05, 1.0, "logo width as a fraction of the map")}},
-       makeEmboss});
+       makeEmboss));
   return entries;
 }
 

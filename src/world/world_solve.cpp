@@ -59,8 +59,11 @@ FrameInputs World::frameInputs() {
 
 void World::computeFriction() {
   // Only started here: the solve stage builds its rows, then awaits the coefficients (a GPU
-  // provider works meanwhile).
-  if (!contacts_.empty()) provider_->startCoefficients(bodies_, contacts_, settings_.friction);
+  // provider works meanwhile). Each contact carries last step's normal impulse meanwhile, the
+  // load a load-dependent model (the contact-area one) reads.
+  if (contacts_.empty()) return;
+  solver_->previousNormalImpulses(contacts_);
+  provider_->startCoefficients(bodies_, contacts_, settings_.friction);
 }
 
 SolveInputs World::solveInputs() {

@@ -3,10 +3,20 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <chrono>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "support/test_support.hpp"
 
@@ -27,6 +37,37 @@ inline std::string slurpBinary(const std::string& path) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+// Lines of a file (0 when it does not exist yet).
+inline long lineCount(const std::string& path) {
+  const std::string text = std::filesystem::exists(path) ? slurpBinary(path) : "";
+  return std::count(text.begin(), text.end(), '\n');
+}
+
+// `asperity ARGS` started in the background and killed with SIGKILL `delay` after `ready()`
+// first holds (polled every 2 ms; after 20 s it is killed anyway). Returns whether it was still
+// running when killed.
+inline bool killWhen(const std::vector<std::string>& args, const std::function<bool()>& ready,
+                     std::chrono::milliseconds delay = std::chrono::milliseconds(0)) {
+  std::vector<std::string> argv_text = {std::string(ASPERITY_BIN_DIR) + "/asperity"};
+  argv_text.insert(argv_text.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : argv_text) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) {
+    ADD_FAILURE() << "cannot start " << argv_text[0];
+    return false;
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (!ready() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  std::this_thread::sleep_for(delay);
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
 }
 
 }  // namespace asperity::test

@@ -1,16 +1,13 @@
 // `asperity sweep`: the same bytes on 1 and 2 threads, one row per sample whose hash equals
 // `asperity run --hash` of the varied scene, and one test per bad input.
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <thread>
+#include <random>
+#include <sstream>
 
 #include "cli/cli_test_support.hpp"
 
@@ -62,28 +59,11 @@ TEST(SweepCommand, RowHashEqualsRunOfTheVariedScene) {
   EXPECT_EQ(r.out, hash + "\n");
 }
 
-// Lines of a file (0 when it does not exist yet).
-long lineCount(const std::string& path) {
-  const std::string text = std::filesystem::exists(path) ? slurpBinary(path) : "";
-  return std::count(text.begin(), text.end(), '\n');
-}
+using test::lineCount;
 
-// `asperity ARGS` started in the background, killed with SIGKILL once `path` has `lines`
-// lines (or after 20 s).
+// `asperity ARGS` killed with SIGKILL once `path` has `lines` lines.
 void killWhenWritten(const std::vector<std::string>& args, const std::string& path, long lines) {
-  std::vector<std::string> argv_text = {std::string(ASPERITY_BIN_DIR) + "/asperity"};
-  argv_text.insert(argv_text.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (std::string& a : argv_text) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  ASSERT_EQ(posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ), 0);
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-  while (lineCount(path) < lines && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  kill(pid, SIGKILL);
-  int status = 0;
-  waitpid(pid, &status, 0);
+  test::killWhen(args, [&] { return lineCount(path) >= lines; });
 }
 
 TEST(SweepCommand, AKilledSweepKeepsItsRowsAndResumesToTheBytesOfOneRun) {
@@ -116,6 +96,54 @@ TEST(SweepCommand, AKilledSweepKeepsItsRowsAndResumesToTheBytesOfOneRun) {
       ASSERT_EQ(r.exit_code, 0) << r.err;
       EXPECT_EQ(slurpBinary(out), whole) << lines << " lines, " << threads;
     }
+  }
+}
+
+// Killed at random moments (after the header, up to past the end): the file is always valid
+// CSV (the header's column count on every line, each line ended) and a prefix of the
+// uninterrupted table, and a resume always gives that table's bytes.
+TEST(SweepCommand, KilledAtRandomMomentsTheFileIsValidAndResumes) {
+  const std::string dir = test::tempDir("sweep_random_kill");
+  auto args = [&](const std::string& out, const std::string& threads) {
+    return std::vector<std::string>{
+        "sweep",     minimal(), "--vary",    "/bodies/*/linear_velocity/0=uniform(0.5,1.5)",
+        "--samples", "40",      "--seconds", "0.5",
+        "--seed",    "9",       "--threads", threads,
+        "--out",     out};
+  };
+  const auto start = std::chrono::steady_clock::now();
+  ASSERT_EQ(runCli(args(dir + "/whole.csv", "2")).exit_code, 0);
+  const auto run_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                          std::chrono::steady_clock::now() - start)
+                          .count();
+  const std::string whole = slurpBinary(dir + "/whole.csv");
+  const std::string header = whole.substr(0, whole.find('\n') + 1);
+  const auto columns = std::count(header.begin(), header.end(), ',');
+  const unsigned seed = std::random_device{}();
+  SCOPED_TRACE("seed " + std::to_string(seed));
+  std::mt19937 random(seed);
+  std::uniform_int_distribution<long> delay_ms(0, std::max<long>(1, run_ms));
+  for (int trial = 0; trial < 6; ++trial) {
+    const std::string threads = trial % 2 == 0 ? "1" : "2";
+    const std::string out = dir + "/killed.csv";
+    std::filesystem::remove(out);
+    std::filesystem::remove(out + ".sweep");
+    const long delay = delay_ms(random);
+    SCOPED_TRACE("killed " + std::to_string(delay) + " ms after the header, " + threads);
+    test::killWhen(args(out, threads), [&] { return lineCount(out) >= 1; },
+                   std::chrono::milliseconds(delay));
+    const std::string left = slurpBinary(out);
+    ASSERT_FALSE(left.empty());
+    EXPECT_EQ(left.back(), '\n');
+    std::stringstream lines(left);
+    for (std::string line; std::getline(lines, line);)
+      EXPECT_EQ(std::count(line.begin(), line.end(), ','), columns) << line;
+    EXPECT_EQ(whole.compare(0, left.size(), left), 0);
+    auto resume = args(out, threads == "1" ? "2" : "1");
+    resume.push_back("--resume");
+    const auto r = runCli(resume);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(slurpBinary(out), whole);
   }
 }
 

@@ -56,6 +56,11 @@ TEST(ReportCommand, EveryExperimentReproducesWithItsFrames) {
     const auto bytes = std::filesystem::file_size(dir + "/report/" + frame + ".png", missing);
     EXPECT_TRUE(!missing && bytes > 1000) << frame;
   }
+  // The chain bolas' hold map: held and fallen throws as dots, the rods' sampled mu as lines.
+  const std::string html = readFile(dir + "/report/index.html");
+  EXPECT_NE(html.find("Hold map"), std::string::npos);
+  EXPECT_NE(html.find("<circle"), std::string::npos);
+  EXPECT_NE(html.find("the rods' sampled mu"), std::string::npos);
 }
 
 TEST(ReportCommand, UnknownExperimentIsAnErrorListingTheKnownOnes) {

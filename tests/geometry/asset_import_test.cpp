@@ -13,6 +13,7 @@
 #include "asperity/geometry/shape_mesh.hpp"
 #include "collision/signed_distance_field.hpp"
 #include "support/test_support.hpp"
+#include "texture/png_codec.hpp"
 
 namespace asperity {
 namespace {
@@ -270,6 +271,41 @@ TEST(AssetImport, ContentOfAnotherFormatIsNotGuessed) {
   const std::filesystem::path path = std::filesystem::path(testing::TempDir()) / "stl_inside.gltf";
   std::ofstream(path) << stl;
   EXPECT_EQ(importError(path.string()).rfind(path.string() + ": cannot import (", 0), 0u);
+}
+
+}  // namespace
+}  // namespace asperity
+
+namespace asperity {
+namespace {
+
+// An OBJ quad with UVs whose MTL names `line` (a grey height PNG, h.png, rising 1 grey level in
+// 255 per texel along u), in a fresh folder; returns the OBJ's path.
+std::string quadWithMaterial(const std::string& line) {
+  const std::string dir = test::tempDir("mtl_heights");
+  std::vector<uint16_t> grey(16 * 16);
+  for (size_t k = 0; k < grey.size(); ++k) grey[k] = static_cast<uint16_t>(10 * (k % 16));
+  png::write(dir + "/h.png", 16, 16, 1, 8, grey);
+  std::ofstream(dir + "/quad.mtl") << "newmtl m\nKd 0.5 0.5 0.5\n" << line << "\n";
+  std::ofstream(dir + "/quad.obj") << "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                      "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\nusemtl m\n"
+                                      "f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
+  return dir + "/quad.obj";
+}
+
+TEST(AssetImport, GreyObjBumpAndDispMapsAreHeightMaps) {
+  // Heights grey * bm texels: 10 levels of 255 per texel times bm 51 is a slope of 2 along u
+  // (the normals tilt toward -u, SPEC 6), for `bump` and for `disp` alike.
+  for (const std::string key : {"bump -bm 51 h.png", "disp -bm 51 h.png"}) {
+    const ImportedAsset a = importAsset(quadWithMaterial(key));
+    ASSERT_TRUE(a.material.normal_map) << key;
+    const Vec3f m = a.material.normal_map->at(7, 5);
+    EXPECT_NEAR(m.x() / m.z(), -2.0, 1e-4) << key;
+    EXPECT_NEAR(m.y() / m.z(), 0.0, 1e-6) << key;
+    EXPECT_DOUBLE_EQ(a.material.normal_scale, 51.0) << key;
+  }
+  // A colour bump image is still a normal map (obj2gltf and most exporters write those).
+  EXPECT_TRUE(importAsset(fixture("slab.obj")).material.normal_map);
 }
 
 }  // namespace

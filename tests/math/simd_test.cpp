@@ -25,8 +25,11 @@ namespace {
 // The built-in providers with the loops' copy `copy`.
 FrictionProviders providersWith(SimdCopy copy) {
   FrictionProviders providers = FrictionProviders::builtIn();
-  providers.add("cpu",
-                [copy] { return std::make_unique<CpuPatchSampler>(CpuSamplerOptions{copy}); });
+  providers.add("cpu", [copy] {
+    CpuSamplerOptions options;
+    options.simd = copy;
+    return std::make_unique<CpuPatchSampler>(options);
+  });
   providers.add("cone", [copy] { return std::make_unique<ConeProvider>(copy); });
   return providers;
 }

@@ -46,10 +46,15 @@ TEST(PatchReuse, OnByDefaultAndOffAtZero) {
 // of each contact it kept: the largest difference of any direction's mu, and how many of the
 // kept (contact, direction) pairs differ by more than 0.005.
 class CheckedReuse : public FrictionProvider {
+  static CpuSamplerOptions optionsFor(PatchPath path) {
+    CpuSamplerOptions options;
+    options.path = path;
+    return options;
+  }
+
  public:
   explicit CheckedReuse(PatchPath path = PatchPath::Raster)
-      : sampler_(CpuSamplerOptions{SimdCopy::Auto, path}),
-        reference_(CpuSamplerOptions{SimdCopy::Auto, path}) {}
+      : sampler_(optionsFor(path)), reference_(optionsFor(path)) {}
   std::string name() const override { return "cpu"; }
   void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                            const FrictionSettings& settings) override {

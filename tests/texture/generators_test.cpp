@@ -18,7 +18,8 @@ using test::expectErrorContaining;
 using test::generate;
 
 // Generators whose output does not depend on the seed.
-const std::set<std::string> kDeterministic = {"sawtooth", "thread", "cones", "heightmap", "emboss"};
+const std::set<std::string> kDeterministic = {"sawtooth", "thread",    "cones",
+                                              "heightmap", "height_map", "emboss"};
 
 // A small grayscale height map for the heightmap generator.
 std::string heightmapFile() {
@@ -34,7 +35,8 @@ GeneratorSpec specFor(const GeneratorInfo& info, uint64_t seed, const std::strin
   spec.name = info.name;
   spec.size = 64;
   spec.seed = seed;
-  if (info.name == "heightmap") spec.params["file"] = file;
+  if (info.name == "heightmap" || info.name == "height_map") spec.params["file"] = file;
+  if (info.name == "height_map") spec.params["height_scale"] = "0.001";  // 8 bits store none
   return spec;
 }
 

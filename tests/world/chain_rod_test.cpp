@@ -326,6 +326,47 @@ Vec3 radial(const Rod& rod, const Vec3& p) {
   return d - d.dot(rod.axis()) * rod.axis();
 }
 
+// Contacts of a chain lying on a rod: a fine chain of flat links (6 mm wide, 10 mm long,
+// 2 mm thick) draped half a turn over a horizontal rod of radius 20 mm, crossing it straight
+// (a chain hung straight over it) or at 30 degrees (a turn of a helix), settles in 1 s. Every
+// link lying on the rod (its centre within a millimetre of the rod's surface plus half its
+// thickness) touches it with two points, at the two ends of the line its face lies along,
+// and carries a normal force; there are as many as the wrap's arc holds (the arc of half a
+// turn over links of 10 mm: 7 or 8).
+TEST(ChainOnRod, DrapedFlatLinksEachTouchTheRodAtTwoPoints) {
+  for (double cross_deg : {0.0, 30.0}) {
+    const Rod rod;
+    Chain c = fineChain(rod, 1.0, 1.0);
+    c.flat = true;
+    c.thickness = 0.002;
+    const double pitch = 2 * kPi * (rod.radius + 0.001) * std::tan(cross_deg * kPi / 180);
+    c.points = drapedPoints(rod, 0.5 * c.thickness, kPi, pitch, kLeg, kLink);
+    Settings s;
+    World world(worldSettings(s));
+    build(world, rod, c);
+    for (int i = 0; i < 1000; ++i) world.step();
+    const BodyId r = world.findBody("rod");
+    int lying = 0;
+    for (BodyId id = 0; id < world.bodies().size(); ++id) {
+      const Body& b = world.body(id);
+      if (b.name.rfind("link_", 0) != 0) continue;
+      if (radial(rod, b.pose.position).norm() > rod.radius + 0.5 * c.thickness + 0.001) continue;
+      ++lying;
+      int points = 0;
+      double normal = 0.0;
+      for (const Contact& k : world.contacts()) {
+        if ((k.body_a == id && k.body_b == r) || (k.body_a == r && k.body_b == id)) {
+          ++points;
+          normal += k.lambda_n;
+        }
+      }
+      EXPECT_EQ(points, 2) << b.name << ", crossing at " << cross_deg << " degrees";
+      EXPECT_GT(normal, 0.0) << b.name << ", crossing at " << cross_deg << " degrees";
+    }
+    EXPECT_GE(lying, 7) << "crossing at " << cross_deg << " degrees";
+  }
+}
+
 // Winding (SPEC 8): the signed angle the chain's joint points turn through about the rod's axis,
 // in turns, counting the segments whose two ends lie within `near` of the axis.
 double turnsAbout(const Rod& rod, const std::vector<Vec3>& points, double near) {

@@ -3,9 +3,14 @@
 #pragma once
 
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "asperity/render/renderer.hpp"
+
+namespace asperity {
+class AtomicOutput;  // asperity/math/atomic_file.hpp
+}  // namespace asperity
 
 namespace asperity::render {
 
@@ -14,7 +19,8 @@ std::string findExecutable(const std::string& name);
 
 class VideoWriter {
  public:
-  // Starts ffmpeg writing `path` at `fps`. Throws asperity::Error when ffmpeg is not on PATH
+  // Starts ffmpeg writing `path` at `fps` (into PATH.tmp, renamed by finish(): a killed render
+  // leaves no cut video under the final name). Throws asperity::Error when ffmpeg is not on PATH
   // (naming the package) or cannot be started.
   VideoWriter(const std::string& path, int width, int height, double fps);
   // Closes the pipe if finish() was not called (errors ignored).
@@ -29,6 +35,7 @@ class VideoWriter {
 
  private:
   std::string path_;
+  std::unique_ptr<AtomicOutput> output_;  // ffmpeg writes its temporary; finish() renames it
   int width_ = 0;
   int height_ = 0;
   FILE* pipe_ = nullptr;

@@ -13,9 +13,12 @@
 // Registered as "cpu" in the scene's friction provider registry.
 #pragma once
 
+#include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
+#include "asperity/contact_area/mechanical.hpp"
 #include "asperity/math/simd_copy.hpp"
 #include "asperity/sampler/friction_provider.hpp"
 #include "asperity/sampler/patch_sampler.hpp"
@@ -26,6 +29,7 @@ namespace patch {
 class MeshCache;
 class PatchReuse;
 class TableCache;
+class HeightCache;
 }  // namespace patch
 
 // How flat patches on flat textured faces (box faces on planes and on each other) are sampled.
@@ -34,13 +38,31 @@ enum class PatchPath {
   Raster,  // every contact rasterised and shaded pixel by pixel (the reference)
 };
 
+// Which friction model the sampler evaluates: the paper's (Eq. 7 with mu0) or the real area
+// of contact (SPEC 13, docs/contact-area.md).
+enum class FrictionModel { Paper, ContactArea };
+inline constexpr std::pair<const char*, FrictionModel> kFrictionModelNames[] = {
+    {"paper", FrictionModel::Paper}, {"contact_area", FrictionModel::ContactArea}};
+
+// What the contact-area model needs beyond FrictionSettings.
+struct ContactAreaOptions {
+  FrictionModel model = FrictionModel::Paper;
+  // The world's step (s): the load W of a contact is its previous normal impulse over it.
+  double dt = 0.01;
+  // Each surface's mechanical values by (body index, shape index); shape index -1 stands for
+  // every shape of the body. A contact on a surface without any is an error under the model.
+  std::map<std::pair<int, int>, Mechanical> mechanical;
+};
+
 struct CpuSamplerOptions {
   // Which compiled copy of the rasterising, shading and summing loops runs (the same bits
   // either way; tests compare them).
   SimdCopy simd = SimdCopy::Auto;
-  // Curved and mesh contacts are rasterised either way. Registered as "cpu" (Raster, the
-  // default) and "cpu_planar" (Planar) in FrictionProviders::builtIn().
+  // Curved and mesh contacts are rasterised either way; so is every contact under the
+  // contact-area model. Registered as "cpu" (Raster, the default) and "cpu_planar" (Planar)
+  // in FrictionProviders::builtIn().
   PatchPath path = PatchPath::Raster;
+  ContactAreaOptions contact_area;
 };
 
 class CpuPatchSampler : public FrictionProvider {
@@ -69,6 +91,8 @@ class CpuPatchSampler : public FrictionProvider {
   // every body that uses it).
   size_t tableBytes() const override;
   void forgetHistory() override;
+  void saveHistory(StateWriter& out) const override;
+  void loadHistory(StateReader& in) override;
 
   // One contact, optionally with its per-pixel images. Same numbers as computeCoefficients.
   void sampleContact(std::span<const Body> bodies, Contact& contact,
@@ -88,6 +112,7 @@ class CpuPatchSampler : public FrictionProvider {
   std::unique_ptr<State> state_;                       // the calling thread's scratch
   std::vector<std::unique_ptr<State>> worker_states_;  // one per pool thread
   std::unique_ptr<patch::PatchReuse> reuse_;           // earlier samples (patch coherence)
+  std::unique_ptr<patch::HeightCache> heights_;        // contact-area model: surface heights
   std::vector<uint8_t> reused_;                        // this call's reuse decisions
   const ThreadPool* pool_ = nullptr;
   double patch_ms_ = 0.0;

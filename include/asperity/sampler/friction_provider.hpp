@@ -33,6 +33,8 @@ struct FrictionSettings {
 };
 
 class ThreadPool;  // the world's worker threads (internal)
+class StateReader;  // asperity/math/state_stream.hpp
+class StateWriter;
 
 class FrictionProvider {
  public:
@@ -74,6 +76,10 @@ class FrictionProvider {
   virtual size_t tableBytes() const { return 0; }
   // Forgets what earlier calls left behind (kept samples), as in a new provider.
   virtual void forgetHistory() {}
+  // What earlier calls left for the next one (kept samples), saved and restored bit for bit
+  // (World::saveState); a provider that keeps nothing writes nothing.
+  virtual void saveHistory(StateWriter& out) const { (void)out; }
+  virtual void loadHistory(StateReader& in) { (void)in; }
 };
 
 }  // namespace asperity

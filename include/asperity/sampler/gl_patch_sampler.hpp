@@ -57,6 +57,8 @@ class GlPatchSampler : public FrictionProvider {
   // surfaces barely moved keep their sample and are not rendered.
   int lastReusedCount() const override;
   void forgetHistory() override;
+  void saveHistory(StateWriter& out) const override;
+  void loadHistory(StateReader& in) override;
 
   // GL_RENDERER of the context in use, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
   std::string renderer() const;

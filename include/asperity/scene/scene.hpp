@@ -16,6 +16,7 @@
 #include "asperity/dynamics/body.hpp"
 #include "asperity/dynamics/driver.hpp"
 #include "asperity/dynamics/joint.hpp"
+#include "asperity/sampler/cpu_patch_sampler.hpp"
 #include "asperity/scene/friction_providers.hpp"
 #include "asperity/world/world.hpp"
 
@@ -69,6 +70,9 @@ struct SceneCamera {
 // out ("surface": "oak"). Each such shape holds a copy, with Surface::source.material = the name.
 struct SceneMaterial {
   Surface surface;
+  // "mechanical": a preset name or {"E", "nu", "H", "tau"}: what the contact-area friction
+  // model needs of the material (docs/contact-area.md). Absent: none.
+  std::optional<Mechanical> mechanical;
   // The entry gives "base_color" (else a shape's asset shows its own colour, as inline).
   bool names_base_color = false;
 };
@@ -77,6 +81,9 @@ struct SceneDesc {
   WorldSettings settings;
   // The friction provider by name ("friction_provider"; InstantiateOptions::providers).
   std::string friction_provider = kDefaultFrictionProvider;
+  // "friction_model": the paper's, or the real area of contact (provider "cpu" only; every
+  // surface then names a material with mechanical values).
+  FrictionModel friction_model = FrictionModel::Paper;
   std::map<std::string, SceneMaterial> materials;  // "materials", by name
   std::vector<BodyDesc> bodies;  // shapes' normal maps unresolved (files / generator specs)
   std::vector<SceneJoint> joints;
@@ -104,6 +111,10 @@ nlohmann::json sceneToJson(const SceneDesc& scene);
 // Writes sceneToJson(scene) (indented, keys sorted). Relative file names are rewritten to
 // stay correct from the new file's folder. Throws asperity::Error naming the path on failure.
 void saveScene(const SceneDesc& scene, const std::string& path);
+// The id a checkpoint file names its scene by (asperity/world/state_file.hpp): FNV-1a of the
+// scene's canonical JSON (sceneToJson) and its body count, the thread count and the friction
+// provider left out (threads change no result; the state names its provider itself).
+uint64_t sceneStateId(const SceneDesc& scene);
 
 // Normal maps, masks and asset meshes that instantiate() loads or generates, kept for reuse:
 // worlds instantiated with the same SceneResources share one copy of each, so an ensemble of

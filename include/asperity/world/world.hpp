@@ -193,6 +193,16 @@ class World {
   // bodies, joints and settings restarted from that state, whatever either did before. Call it
   // too after changing bodies' shapes or surfaces.
   void forgetContactHistory();
+  // Everything the next step depends on, as bytes (src/world/world_state.cpp, docs/checkpoints.md):
+  // the clock, every body's pose and velocities, joints' rest lengths, springs and loads, the
+  // collision stage's persistence (Bullet's broadphase, pairs and persistent manifolds, point
+  // ids), the solver's warm starts and the provider's kept samples. loadState puts them into a
+  // world of the same scene (bodies, joints, settings, provider): from then on it steps exactly
+  // (bit for bit) as the saved world would have, on any thread count. Throws asperity::Error
+  // naming what does not fit (bodies, joints, provider) or a state cut short.
+  std::string saveState() const;
+  void loadState(std::string_view state);
+
   // FNV-1a over the bit patterns of every body's pose and velocities (determinism checks).
   uint64_t stateHash() const;
 

@@ -426,6 +426,14 @@ void GlPatchSampler::forgetHistory() {
   impl_->reuse = patch::PatchReuse();
 }
 
+void GlPatchSampler::saveHistory(StateWriter& out) const {
+  impl_->reuse.save(out);
+}
+
+void GlPatchSampler::loadHistory(StateReader& in) {
+  impl_->reuse.load(in);
+}
+
 std::string GlPatchSampler::renderer() const {
   const auto* text = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   return text != nullptr ? text : "";

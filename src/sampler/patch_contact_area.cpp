@@ -1,0 +1,213 @@
+// The real-contact-area model on the CPU sampler's rasters (patch_contact_area.hpp).
+#include "sampler/patch_contact_area.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "asperity/error.hpp"
+#include "asperity/geometry/shape_mesh.hpp"
+#include "asperity/texture/generator_heights.hpp"
+#include "sampler/patch_texture.hpp"
+
+namespace asperity::patch {
+
+void HeightCache::add(const Surface& surface) {
+  const NormalMap* key = surface.normal_map.get();
+  if (key == nullptr || entries_.count(key) > 0) return;
+  Entry entry{surface.normal_map, nullptr};
+  const GeneratorSpec& spec = surface.source.generator;
+  if (!spec.name.empty() && generatorHasHeights(spec.name))
+    entry.heights = std::make_shared<const HeightMap>(generateHeightMap(spec, surface.texture_size));
+  entries_.emplace(key, std::move(entry));
+}
+
+void HeightCache::prepare(std::span<const Body> bodies, const Contact& contact) {
+  for (const Side side : {Side::A, Side::B}) {
+    const ShapeRange range = shapesOf(bodies, contact, side);
+    for (int k = range.first; k < range.last; ++k)
+      add(range.body->shapes[static_cast<size_t>(k)].surface);
+  }
+}
+
+const HeightMap* HeightCache::find(const NormalMap* map) const {
+  const auto it = entries_.find(map);
+  return it == entries_.end() ? nullptr : it->second.heights.get();
+}
+
+namespace {
+
+const Mechanical* lookup(const ContactAreaOptions& options, int body, int shape) {
+  auto it = options.mechanical.find({body, shape});
+  if (it == options.mechanical.end()) it = options.mechanical.find({body, -1});
+  return it == options.mechanical.end() ? nullptr : &it->second;
+}
+
+// Bilinear height at (u, v) in repeats, bracketed as the normals are (HeightMap::sample's
+// values without its libm calls, which cost more than the rest of the model).
+float sampleHeight(const HeightMap& map, float u, float v) {
+  const TexelBracket bu = bracketRepeat(u, map.width);
+  const TexelBracket bv = bracketRepeat(v, map.height);
+  const float* row0 = &map.values[static_cast<size_t>(bv.lo) * map.width];
+  const float* row1 = &map.values[static_cast<size_t>(bv.hi) * map.width];
+  const float bottom = (1.0f - bu.weight) * row0[bu.lo] + bu.weight * row0[bu.hi];
+  const float top = (1.0f - bu.weight) * row1[bu.lo] + bu.weight * row1[bu.hi];
+  return (1.0f - bv.weight) * bottom + bv.weight * top;
+}
+
+// The heights of one raster's primitives, looked up once per run of pixels of one primitive
+// (a map lookup per pixel would cost more than the rest of the model).
+struct PrimitiveHeights {
+  const SurfaceRaster& raster;
+  const HeightCache& cache;
+  int32_t id = std::numeric_limits<int32_t>::min();
+  const HeightMap* heights = nullptr;
+
+  const HeightMap* of(int32_t primitive) {
+    if (primitive != id) {
+      id = primitive;
+      const Material& m = primitive >= 0 ? raster.planars[static_cast<size_t>(primitive)].material
+                                         : raster.curveds[static_cast<size_t>(-1 - primitive)].material;
+      heights = cache.find(m.map);
+    }
+    return heights;
+  }
+};
+
+// The height (m) of the kept fragment at pixel (i, j), out of its surface toward the other
+// body, from the heights of the primitive's normal map at the fragment's uv (0: flat).
+float heightAt(const Volume& volume, PrimitiveHeights& lookup, int i, int j) {
+  const SurfaceRaster& raster = lookup.raster;
+  const int32_t id = raster.primitive[static_cast<size_t>(j * volume.resolution + i)];
+  const HeightMap* h = lookup.of(id);
+  if (h == nullptr) return 0.0f;
+  const double x = volume.centreX(i), y = volume.centreX(j);
+  if (id >= 0) {
+    const Planar& p = raster.planars[static_cast<size_t>(id)];
+    const auto xf = static_cast<float>(x), yf = static_cast<float>(y);
+    return sampleHeight(*h, p.uf[0] + p.uf[1] * xf + p.uf[2] * yf,
+                        p.vf[0] + p.vf[1] * xf + p.vf[2] * yf);
+  }
+  // Curved: the hit point and its analytic uv, as the shading finds them (patch_shade.cpp).
+  const Curved& c = raster.curveds[static_cast<size_t>(-1 - id)];
+  double z = 0.0;
+  castCurved(c, raster.side, x, y, z);
+  const SurfaceFrame sf = surfaceFrameAt(*c.shape, -1, c.origin_local + c.to_local * Vec3(x, y, z));
+  return sampleHeight(*h, static_cast<float>(sf.uv.x()), static_cast<float>(sf.uv.y()));
+}
+
+// The composite roughness over P's bounding box (origin i0, j0 in the patch): at each pixel of
+// P, how far the two surfaces' heights reach past the macro gap between their rasterised faces
+// (keys: z for B, -z for A, so key_A + key_B = z_B - z_A = -gap). Other pixels lie below P's
+// lowest by P's span, so that they never touch. Returns false when P is flat (the model's full
+// contact). Only the box is scanned for summits: a contact often covers a part of its patch.
+bool compositeOverPatch(const Volume& volume, const std::array<SurfaceRaster, 2>& rasters,
+                        std::span<const uint32_t> in_patch, const HeightCache& cache,
+                        AreaScratch& s) {
+  const int r = volume.resolution;
+  int i0 = r, j0 = r, i1 = -1, j1 = -1;
+  for (const uint32_t p : in_patch) {
+    const int i = static_cast<int>(p & 0xffffu), j = static_cast<int>(p >> 16);
+    i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
+  }
+  HeightMap& out = s.composite;
+  s.i0 = i0, s.j0 = j0;
+  out.width = i1 - i0 + 1, out.height = j1 - j0 + 1;
+  out.values.assign(static_cast<size_t>(out.width * out.height),
+                    std::numeric_limits<float>::quiet_NaN());
+  float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+  PrimitiveHeights a{rasters[0], cache}, b{rasters[1], cache};
+  for (const uint32_t p : in_patch) {
+    const int i = static_cast<int>(p & 0xffffu), j = static_cast<int>(p >> 16);
+    const auto idx = static_cast<size_t>(j * r + i);
+    const float c = heightAt(volume, a, i, j) + heightAt(volume, b, i, j) + rasters[0].key[idx] +
+                    rasters[1].key[idx];
+    out.at(i - i0, j - j0) = c;
+    lo = std::min(lo, c), hi = std::max(hi, c);
+  }
+  if (!(hi > lo)) return false;
+  const float below = lo - (hi - lo);
+  for (float& v : out.values)
+    if (std::isnan(v)) v = below;
+  return true;
+}
+
+// The ploughing vectors of the pixels in contact, A's then B's, into scratch; returns their count.
+size_t gatherInContact(std::span<const uint32_t> in_patch, const float* gx, const float* gy,
+                       AreaScratch& s) {
+  const size_t count = in_patch.size();
+  s.gx.resize(2 * count);
+  s.gy.resize(2 * count);
+  size_t n = 0;
+  for (size_t k = 0; k < count; ++k) {
+    const uint32_t p = in_patch[k];
+    const int i = static_cast<int>(p & 0xffffu) - s.i0, j = static_cast<int>(p >> 16) - s.j0;
+    if (!s.mask[static_cast<size_t>(j * s.composite.width + i)]) continue;
+    s.gx[n] = gx[k], s.gy[n] = gy[k];
+    s.gx[count + n] = gx[count + k], s.gy[count + n] = gy[count + k];
+    ++n;
+  }
+  return n;
+}
+
+}  // namespace
+
+std::array<const Mechanical*, 2> mechanicalOf(const ContactAreaOptions& options,
+                                              const Contact& contact,
+                                              const ShapeRange (&ranges)[2]) {
+  std::array<const Mechanical*, 2> pair{};
+  const int bodies[2] = {static_cast<int>(contact.body_a), static_cast<int>(contact.body_b)};
+  for (size_t s = 0; s < 2; ++s) {
+    const Mechanical* m = lookup(options, bodies[s], ranges[s].first);
+    if (m == nullptr)
+      throw Error("friction model contact_area: body " + std::to_string(bodies[s]) + " shape " +
+                  std::to_string(ranges[s].first) +
+                  " has no mechanical values (E, nu, H, tau): give its surface a \"mechanical\" "
+                  "preset or values");
+    pair[s] = m;
+  }
+  return pair;
+}
+
+int finishAreaContact(const Volume& volume, const std::array<SurfaceRaster, 2>& rasters,
+                      std::span<const uint32_t> in_patch, const float* gx, const float* gy,
+                      const std::array<const Mechanical*, 2>& pair, const AreaInputs& in,
+                      Contact& contact, AreaScratch& s) {
+  const size_t count = in_patch.size();
+  const double apparent = static_cast<double>(count) * volume.pixel * volume.pixel;
+  const ContactMaterial material = contactPair(*pair[0], *pair[1]);
+  // The load: last step's normal impulse over the step; a new contact (none yet) is taken at
+  // a light load, 1e-4 of what would flatten the patch, where A_r is still proportional to W.
+  const double stiff = material.hardness > 0.0 ? material.hardness : material.modulus;
+  const double light = 1e-4 * stiff * apparent;
+  const double load = std::max(contact.lambda_n / in.options->dt, light);
+  double real_area = apparent;
+  // Without relief every pixel of P is in contact.
+  s.i0 = s.j0 = 0;
+  s.composite.width = volume.resolution;
+  s.mask.assign(static_cast<size_t>(volume.resolution * volume.resolution), 1);
+  if (count > 0 && compositeOverPatch(volume, rasters, in_patch, *in.heights, s)) {
+    findSummitsInto(s.composite, s.composite.width * volume.pixel, s.summits);
+    s.summits.apparent_area = apparent;
+    const ContactArea area = solveContact(s.summits, material, load);
+    real_area = area.real_area;
+    contactMaskInto(s.summits, area, s.mask);
+  }
+  const size_t touching = count > 0 ? gatherInContact(in_patch, gx, gy, s) : 0;
+  // Adhesion, capped as the ploughing term is (a flat pair is in full contact at any load).
+  PatchGains gains = in.gains;
+  gains.mu0 = std::min(pairShear(*pair[0], *pair[1]) * real_area / load, in.mu_max);
+  std::array<std::array<double, kMaxDirections>, 2> sums{};
+  const size_t n = in.directions.size();
+  for (size_t k = 0; k < 2 && touching > 0; ++k) {
+    accumulateDirectionalSums(std::span<const float>(s.gx.data() + k * count, touching),
+                              std::span<const float>(s.gy.data() + k * count, touching),
+                              in.directions, std::span<double>(sums[k].data(), n), in.simd);
+  }
+  finishContact(contact, std::span<const double>(sums[0].data(), n),
+                std::span<const double>(sums[1].data(), n), static_cast<int>(touching), gains);
+  return static_cast<int>(touching);
+}
+
+}  // namespace asperity::patch
