@@ -286,10 +286,36 @@ bool CpuPatchSampler::State::planarFace(const patch::Volume& volume, const patch
   return out.tables != nullptr;  // a texture over the tables' budget is rasterised
 }
 
+namespace {
+
+// Whether a surface of one box or plane surely has no face within kMaxTilt of the contact
+// normal (planarFace would refuse it): then the raster path is taken before any primitive is
+// built. The margin keeps every contact near the limit for planarFace's own test.
+bool surelyTilted(const patch::ShapeRange& range, const Vec3& normal) {
+  if (range.last - range.first != 1) return false;
+  const Shape& shape = range.body->shapes[static_cast<size_t>(range.first)];
+  const Mat3 r = patch::shapePose(*range.body, range.first).rotation.toRotationMatrix();
+  double best = 0.0;
+  if (shape.type == ShapeType::Box) {
+    best = (r.transpose() * normal).cwiseAbs().maxCoeff();
+  } else if (shape.type == ShapeType::Plane) {
+    const double len = shape.plane_normal.norm();
+    if (!(len > 0.0)) return false;
+    best = std::abs((r * shape.plane_normal).dot(normal)) / len;
+  } else {
+    return false;
+  }
+  return best < std::cos(patch::kMaxTilt) - 1e-9;
+}
+
+}  // namespace
+
 bool CpuPatchSampler::State::samplePlanar(const patch::Volume& volume,
                                           const patch::ShapeRange (&ranges)[2], Contact& contact,
                                           const FrictionSettings& settings,
                                           std::array<patch::DepthMargins, 2>& margins) {
+  if (surelyTilted(ranges[0], contact.normal) || surelyTilted(ranges[1], contact.normal))
+    return false;
   patch::PlanarSurface surfaces[2];
   if (!planarFace(volume, ranges[0], Side::A, settings, surfaces[0]) ||
       !planarFace(volume, ranges[1], Side::B, settings, surfaces[1])) {

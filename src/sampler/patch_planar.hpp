@@ -6,12 +6,13 @@
 // map is blended bilinearly (unnormalised, as patch_texture.hpp does), turned into a ploughing
 // vector g (fragment_model.hpp) and, through the gain mask, into max(0, g . e) for a direction e
 // in the map's tangent plane. Averaging the texels' own coefficients is a different number
-// (the ploughing term is not linear in the normal). The tables hold, per row of cells (a cell
-// is 1 / sub of a texel, between texel centres, so its normals are one bilinear patch), the
-// running sums of the cells' means along the row, at `angles` directions e evenly spaced in
-// the tangent plane. A footprint's integral is then a sum over the cell rows it crosses of one
-// span each (Green's theorem over the running sums), so its cost is the footprint's height in
-// cells, not R x R pixels.
+// (the ploughing term is not linear in the normal). The tables hold a summed-area table (in
+// double) of the cells' means (a cell is 1 / sub of a texel, between texel centres, so its
+// normals are one bilinear patch), at `angles` directions e evenly spaced in the tangent plane.
+// A footprint aligned with the texture's axes (boxes stacked square on each other) is then four
+// corner reads per angle; any other convex footprint is a sum over the cell rows it crosses of
+// one span each (two lines of the table per end), so its cost is its height in cells, not
+// R x R pixels.
 //
 // Approximations, each bounded in docs/samplers.md: (1) the footprint's mean of the field, not
 // its mean at the pixel centres (the raster path's own sampling noise); (2) cells cut by the
@@ -65,7 +66,7 @@ class CoefficientTables {
                     const ThreadPool* pool);
 
   int angles() const { return angles_; }
-  size_t bytes() const { return prefix_.size() * sizeof(float); }
+  size_t bytes() const { return sat_.size() * sizeof(double); }
 
   // The integrals over a convex polygon given in cell coordinates (x = (u W - 1/2) sub, y the
   // same along v), counter-clockwise or clockwise, at the tabulated angles `which` (indices in
@@ -79,24 +80,36 @@ class CoefficientTables {
  private:
   void buildRow(const NormalMap& map, const GainMask* mask, float mu_max, int row);
   // Where x (any real: the texture repeats) falls in row `row`, for its running sums.
+  // A row's running sum is the difference of two lines of the 2D table (y = row, row + 1).
   struct RowPosition {
-    const float* cell = nullptr;   // the running sums at the cell's start (angles in a row)
-    const float* total = nullptr;  // the running sums at the row's end
+    const double* cell = nullptr;   // line `row` at the cell's start (angles side by side)
+    const double* total = nullptr;  // line `row` at the row's end
+    size_t line = 0;                // doubles from one line to the next
     double fraction = 0.0, repeats = 0.0;
     double sumAt(size_t angle, int angles) const {
-      const double lo = cell[angle];
-      const double hi = cell[static_cast<size_t>(angles) + angle];
+      const size_t next = static_cast<size_t>(angles) + angle;
+      const double lo = cell[line + angle] - cell[angle];
+      const double hi = cell[line + next] - cell[next];
       // Most footprints lie within one repeat: the row's total is then not read.
-      return (repeats != 0.0 ? repeats * total[angle] : 0.0) + lo + fraction * (hi - lo);
+      const double whole = repeats != 0.0 ? repeats * (total[line + angle] - total[angle]) : 0.0;
+      return whole + lo + fraction * (hi - lo);
     }
   };
+  // The sums over [0, x] x [0, y] (x < 2 cols, y < 2 rows) at `which`, times sign, added to out.
+  void cornerSums(double x, double y, std::span<const int> which, double sign,
+                  std::span<double> out) const;
+  // integrate for an axis-aligned rectangle within one repeat; false for any other polygon.
+  bool integrateRectangle(std::span<const Vec2> polygon, std::span<const int> which,
+                          std::span<double> out, double& area) const;
   RowPosition positionOf(int row, double x) const;
 
   int cols_ = 0, rows_ = 0, sub_ = 1, angles_ = 0;
   int map_width_ = 0, map_height_ = 0;
   double inv_cols_ = 1.0;
   std::vector<Vec2f> directions_;  // the tabulated e
-  std::vector<float> prefix_;      // [(row (cols + 1) + i) angles + a]
+  // The summed-area table: S(x, y) = integral over [0, x) x [0, y) in cells, at
+  // [(y (cols + 1) + x) angles + a], x in [0, cols], y in [0, rows].
+  std::vector<double> sat_;
 };
 
 // Tables by texture identity, shared by every body whose surface uses the same map. get() builds

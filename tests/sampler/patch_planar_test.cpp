@@ -48,6 +48,40 @@ TEST(PlanarTables, UniformSlopeIntegratesToTheClosedForm) {
   }
 }
 
+TEST(PlanarTables, AlignedRectanglesMatchTheRowSpans) {
+  // A texture-aligned rectangle is read from four corners of the 2D table; the same rectangle
+  // with one vertex pushed out by 1e-9 cells goes through the row spans: the same integrals.
+  auto map = std::make_shared<NormalMap>(16, 12);
+  for (int j = 0; j < 12; ++j)
+    for (int i = 0; i < 16; ++i) {
+      const auto x = static_cast<float>(i), y = static_cast<float>(j);
+      map->at(i, j) =
+          Vec3f(0.4f * std::sin(1.3f * x + 0.7f * y), 0.3f * std::cos(0.9f * x * y), 1.0f)
+              .normalized();
+    }
+  const patch::TableLayout layout = patch::tableLayout(16, 12, 4);
+  const patch::CoefficientTables tables(*map, nullptr, 4.0f, layout, nullptr);
+  std::vector<int> which(static_cast<size_t>(tables.angles()));
+  for (int a = 0; a < tables.angles(); ++a) which[static_cast<size_t>(a)] = a;
+  const double boxes[][4] = {{1.3, 2.7, 9.6, 7.2},
+                             {-5.5, -3.25, 4.1, 20.9},
+                             {25.2, 14.1, 57.9, 37.6},
+                             {0.0, 0.0, 32.0, 24.0},
+                             {-40.4, 30.5, -33.0, 31.0}};
+  for (const auto& b : boxes) {
+    const std::vector<Vec2> rect = {{b[0], b[1]}, {b[2], b[1]}, {b[2], b[3]}, {b[0], b[3]}};
+    const std::vector<Vec2> pushed = {
+        {b[0], b[1]}, {b[2], b[1]}, {b[2], b[3]}, {0.5 * (b[0] + b[2]), b[3] + 1e-9}, {b[0], b[3]}};
+    std::vector<double> fast(which.size()), spans(which.size());
+    const double area = tables.integrate(rect, which, fast);
+    const double area_spans = tables.integrate(pushed, which, spans);
+    EXPECT_NEAR(area, (b[2] - b[0]) * (b[3] - b[1]), 1e-9);
+    EXPECT_NEAR(area, area_spans, 1e-6);
+    for (size_t a = 0; a < which.size(); ++a)
+      EXPECT_NEAR(fast[a] / area, spans[a] / area_spans, 1e-7) << "box " << b[0] << " angle " << a;
+  }
+}
+
 TEST(PlanarTables, BudgetHoldsAndOversizedTexturesAreRasterised) {
   // 512 x 512 at N = 16: within 64 MB; 8192 x 8192 fits no layout (the raster path samples it).
   const patch::TableLayout layout = patch::tableLayout(512, 512, 16);
