@@ -164,7 +164,8 @@ TableLayout tableLayout(int width, int height, int directions) {
   if (width <= 0 || height <= 0 || directions <= 0) return {1, 0};
   // A multiple of N, so that all N directions share one interpolation weight.
   const int angles = directions * std::max(1, (kMinAngles + directions - 1) / directions);
-  for (const int n : {angles, directions}) {
+  // Fewer angles only where the budget needs it, as many as fit (a multiple of N).
+  for (int n = angles; n >= directions; n -= directions) {
     for (int sub = kPreferredSub; sub >= 1; sub /= 2) {
       const TableLayout layout{sub, n};
       if (layout.bytes(width, height) <= kTableBudgetBytes) return layout;
