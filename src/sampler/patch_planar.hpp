@@ -54,6 +54,9 @@ inline constexpr size_t kTableBudgetBytes = size_t{64} << 20;
 struct TableLayout {
   int sub = 1;
   int angles = 0;
+  // A second table on the grid turned by 45 degrees (square maps, where it fits the budget):
+  // footprints turned by 45 degrees against the texture are rectangles there.
+  bool diagonal = false;
   size_t bytes(int width, int height) const;
 };
 TableLayout tableLayout(int width, int height, int directions);
@@ -66,7 +69,7 @@ class CoefficientTables {
                     const ThreadPool* pool);
 
   int angles() const { return angles_; }
-  size_t bytes() const { return sat_.size() * sizeof(double); }
+  size_t bytes() const { return (sat_.size() + diagonal_sat_.size()) * sizeof(double); }
 
   // The integrals over a convex polygon given in cell coordinates (x = (u W - 1/2) sub, y the
   // same along v), counter-clockwise or clockwise, at the tabulated angles `which` (indices in
@@ -80,6 +83,17 @@ class CoefficientTables {
  private:
   void buildRow(const NormalMap& map, const GainMask* mask, float mu_max, int row);
   // Where x (any real: the texture repeats) falls in row `row`, for its running sums.
+  // A summed-area table of cols x rows cells (cols + 1 by rows + 1 values per angle) that
+  // tiles the plane.
+  struct Grid {
+    const double* sat = nullptr;
+    int cols = 0, rows = 0;
+  };
+  Grid axisGrid() const { return {sat_.data(), cols_, rows_}; }
+  void buildDiagonalRow(const NormalMap& map, const GainMask* mask, float mu_max, int row);
+  // The field at texel coordinates (tx, ty) (texel centres at integers), added to cell.
+  void addFieldAt(const NormalMap& map, const GainMask* mask, float mu_max, double tx, double ty,
+                  std::span<double> cell) const;
   // A row's running sum is the difference of two lines of the 2D table (y = row, row + 1).
   struct RowPosition {
     const double* cell = nullptr;   // line `row` at the cell's start (angles side by side)
@@ -96,11 +110,11 @@ class CoefficientTables {
     }
   };
   // The sums over [0, x] x [0, y] (x < 2 cols, y < 2 rows) at `which`, times sign, added to out.
-  void cornerSums(double x, double y, std::span<const int> which, double sign,
+  void cornerSums(const Grid& grid, double x, double y, std::span<const int> which, double sign,
                   std::span<double> out) const;
-  // integrate for an axis-aligned rectangle within one repeat; false for any other polygon.
-  bool integrateRectangle(std::span<const Vec2> polygon, std::span<const int> which,
-                          std::span<double> out, double& area) const;
+  // integrate for a rectangle aligned with the grid within one repeat; false for any other.
+  bool integrateRectangle(const Grid& grid, std::span<const Vec2> polygon,
+                          std::span<const int> which, std::span<double> out, double& area) const;
   RowPosition positionOf(int row, double x) const;
 
   int cols_ = 0, rows_ = 0, sub_ = 1, angles_ = 0;
@@ -110,6 +124,10 @@ class CoefficientTables {
   // The summed-area table: S(x, y) = integral over [0, x) x [0, y) in cells, at
   // [(y (cols + 1) + x) angles + a], x in [0, cols], y in [0, rows].
   std::vector<double> sat_;
+  // The diagonal table (layout.diagonal): cells of one texel along p = tx + ty and q = tx - ty
+  // (half a texel's area), 2 W of them along each (the plane's period along both).
+  int diagonal_ = 0;
+  std::vector<double> diagonal_sat_;
 };
 
 // Tables by texture identity, shared by every body whose surface uses the same map. get() builds

@@ -82,6 +82,39 @@ TEST(PlanarTables, AlignedRectanglesMatchTheRowSpans) {
   }
 }
 
+TEST(PlanarTables, DiamondsReadTheDiagonalTable) {
+  // A square turned by 45 degrees against the texture is a rectangle of the diagonal table; the
+  // same square with one vertex pushed out by 1e-9 cells goes through the axis table's row
+  // spans. The two tables discretise the field on different cells: close, not equal.
+  auto map = std::make_shared<NormalMap>(16, 16);
+  for (int j = 0; j < 16; ++j)
+    for (int i = 0; i < 16; ++i) {
+      const auto x = static_cast<float>(i), y = static_cast<float>(j);
+      map->at(i, j) = Vec3f(0.2f * std::sin(0.4f * x + 0.3f * y), 0.15f * std::cos(0.5f * y), 1.0f)
+                          .normalized();
+    }
+  const patch::TableLayout layout = patch::tableLayout(16, 16, 4);
+  ASSERT_TRUE(layout.diagonal);
+  const patch::CoefficientTables tables(*map, nullptr, 4.0f, layout, nullptr);
+  std::vector<int> which(static_cast<size_t>(tables.angles()));
+  for (int a = 0; a < tables.angles(); ++a) which[static_cast<size_t>(a)] = a;
+  const double centres[][3] = {{5.3, 7.1, 6.0}, {-20.2, 3.7, 11.3}, {40.9, -33.4, 4.4}};
+  for (const auto& c : centres) {
+    const double x = c[0], y = c[1], h = c[2];
+    const std::vector<Vec2> diamond = {{x, y - h}, {x + h, y}, {x, y + h}, {x - h, y}};
+    const std::vector<Vec2> pushed = {
+        {x, y - h}, {x + h, y}, {x + 0.5 * h + 1e-9, y + 0.5 * h}, {x, y + h}, {x - h, y}};
+    std::vector<double> fast(which.size()), spans(which.size());
+    const double area = tables.integrate(diamond, which, fast);
+    const double area_spans = tables.integrate(pushed, which, spans);
+    ASSERT_GT(area, 0.0);
+    for (size_t a = 0; a < which.size(); ++a) {
+      const double mean = spans[a] / area_spans;
+      EXPECT_NEAR(fast[a] / area, mean, 2e-3 + 0.01 * mean) << "centre " << x << " angle " << a;
+    }
+  }
+}
+
 TEST(PlanarTables, BudgetHoldsAndOversizedTexturesAreRasterised) {
   // 512 x 512 at N = 16: within 64 MB; 8192 x 8192 fits no layout (the raster path samples it).
   const patch::TableLayout layout = patch::tableLayout(512, 512, 16);
