@@ -168,7 +168,7 @@ TableLayout tableLayout(int width, int height, int directions) {
   // Fewer angles only where the budget needs it, as many as fit (a multiple of N).
   for (int n = angles; n >= directions; n -= directions) {
     for (int sub = kPreferredSub; sub >= 1; sub /= 2) {
-      TableLayout layout{sub, n, false};
+      TableLayout layout{sub, n, false, directions};
       if (layout.bytes(width, height) > kTableBudgetBytes) continue;
       layout.diagonal = width == height;
       if (layout.bytes(width, height) > kTableBudgetBytes) layout.diagonal = false;
@@ -197,29 +197,45 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
     directions_[static_cast<size_t>(a)] =
         Vec2f(static_cast<float>(std::cos(t)), static_cast<float>(std::sin(t)));
   }
-  sat_.assign(layout.bytes(map.width(), map.height()) / sizeof(double), 0.0);
+  group_ = layout.group > 0 && angles_ % layout.group == 0 ? layout.group : angles_;
+  phases_ = angles_ / group_;
+  if (layout.diagonal) diagonal_ = 2 * map.width();
+  const size_t axis_values = static_cast<size_t>(rows_ + 1) * static_cast<size_t>(cols_ + 1) *
+                             static_cast<size_t>(angles_);
+  sat_.assign(axis_values, 0.0);
+  diagonal_sat_.assign(layout.bytes(map.width(), map.height()) / sizeof(double) - axis_values, 0.0);
   // Rows are independent: each thread writes its own running sums, in the same order of sums.
   forEachOn(pool, static_cast<size_t>(rows_), 4,
             [&](size_t row) { buildRow(map, mask, mu_max, static_cast<int>(row)); });
   // Then the rows summed down the columns, on this thread: S(x, y) = the integral over
   // [0, x) x [0, y) in cells (double: a 1024^2 table's totals keep 1e-10 of a cell).
-  const size_t line = static_cast<size_t>(cols_ + 1) * static_cast<size_t>(angles_);
-  for (size_t y = 2; y <= static_cast<size_t>(rows_); ++y) {
-    double* row = sat_.data() + y * line;
-    const double* below = row - line;
-    for (size_t k = 0; k < line; ++k) row[k] += below[k];
-  }
-  if (!layout.diagonal) return;
-  diagonal_ = 2 * map.width();
-  const size_t dline = static_cast<size_t>(diagonal_ + 1) * static_cast<size_t>(angles_);
-  diagonal_sat_.assign(dline * static_cast<size_t>(diagonal_ + 1), 0.0);
+  sumColumns(axisGrid(), sat_.data());
+  if (diagonal_ == 0) return;
   forEachOn(pool, static_cast<size_t>(diagonal_), 4,
             [&](size_t row) { buildDiagonalRow(map, mask, mu_max, static_cast<int>(row)); });
-  for (size_t y = 2; y <= static_cast<size_t>(diagonal_); ++y) {
-    double* row = diagonal_sat_.data() + y * dline;
-    const double* below = row - dline;
-    for (size_t k = 0; k < dline; ++k) row[k] += below[k];
+  sumColumns(diagonalGrid(), diagonal_sat_.data());
+}
+
+void CoefficientTables::sumColumns(const Grid& grid, double* sat) const {
+  const size_t line = static_cast<size_t>(grid.cols + 1) * static_cast<size_t>(group_);
+  for (int phase = 0; phase < phases_; ++phase) {
+    double* plane = sat + static_cast<size_t>(phase) * grid.plane;
+    for (size_t y = 2; y <= static_cast<size_t>(grid.rows); ++y) {
+      double* row = plane + y * line;
+      const double* below = row - line;
+      for (size_t k = 0; k < line; ++k) row[k] += below[k];
+    }
   }
+}
+
+void CoefficientTables::storeRow(const Grid& grid, double* sat, int row, int c,
+                                 std::span<const double> running) const {
+  // Point (c + 1, row + 1) of the grid: each angle in its phase's plane.
+  const size_t point = (static_cast<size_t>(row + 1) * static_cast<size_t>(grid.cols + 1) +
+                        static_cast<size_t>(c + 1)) *
+                       static_cast<size_t>(group_);
+  for (size_t a = 0; a < running.size(); ++a)
+    sat[point + offsetOf(grid, static_cast<int>(a))] = running[a];
 }
 
 void CoefficientTables::addFieldAt(const NormalMap& map, const GainMask* mask, float mu_max,
@@ -251,8 +267,7 @@ void CoefficientTables::buildDiagonalRow(const NormalMap& map, const GainMask* m
   constexpr int q = 2;
   const auto m = static_cast<size_t>(angles_);
   std::vector<double> cell(m), running(m, 0.0);
-  double* out =
-      diagonal_sat_.data() + static_cast<size_t>(row + 1) * static_cast<size_t>(diagonal_ + 1) * m;
+  const Grid grid = diagonalGrid();
   for (int c = 0; c < diagonal_; ++c) {
     std::fill(cell.begin(), cell.end(), 0.0);
     for (int sy = 0; sy < q; ++sy) {
@@ -262,10 +277,8 @@ void CoefficientTables::buildDiagonalRow(const NormalMap& map, const GainMask* m
         addFieldAt(map, mask, mu_max, 0.5 * (p + qq), 0.5 * (p - qq), cell);
       }
     }
-    for (size_t a = 0; a < m; ++a) {
-      running[a] += cell[a] / (q * q);
-      out[(static_cast<size_t>(c) + 1) * m + a] = running[a];
-    }
+    for (size_t a = 0; a < m; ++a) running[a] += cell[a] / (q * q);
+    storeRow(grid, diagonal_sat_.data(), row, c, running);
   }
 }
 
@@ -276,7 +289,7 @@ void CoefficientTables::buildRow(const NormalMap& map, const GainMask* mask, flo
   std::vector<double> cell(m), running(m, 0.0);
   // The row's running sums go to table row row + 1 (row 0 stays 0); the columns are summed
   // after every row is built.
-  double* out = sat_.data() + static_cast<size_t>(row + 1) * static_cast<size_t>(cols_ + 1) * m;
+  const Grid grid = axisGrid();
   const double inv_sub = 1.0 / sub_;
   for (int c = 0; c < cols_; ++c) {
     std::fill(cell.begin(), cell.end(), 0.0);
@@ -305,10 +318,8 @@ void CoefficientTables::buildRow(const NormalMap& map, const GainMask* mask, flo
         for (size_t a = 0; a < m; ++a) cell[a] += std::max(0.0f, g.dot(directions_[a]));
       }
     }
-    for (size_t a = 0; a < m; ++a) {
-      running[a] += cell[a] / (q * q);
-      out[(static_cast<size_t>(c) + 1) * m + a] = running[a];
-    }
+    for (size_t a = 0; a < m; ++a) running[a] += cell[a] / (q * q);
+    storeRow(grid, sat_.data(), row, c, running);
   }
 }
 
@@ -318,7 +329,7 @@ Vec2 CoefficientTables::cellOf(double u, double v) const {
 
 CoefficientTables::RowPosition CoefficientTables::positionOf(int row, double x) const {
   // Whole repeats of the row, then the cell and the fraction within it.
-  const auto m = static_cast<size_t>(angles_);
+  const auto m = static_cast<size_t>(group_);
   RowPosition p;
   p.repeats = std::floor(x * inv_cols_);
   const double rem = x - p.repeats * cols_;
@@ -336,7 +347,7 @@ void CoefficientTables::cornerSums(const Grid& grid, double x, double y, std::sp
   // x in [0, 2 cols), y in [0, 2 rows) (see integrateRectangle): a coordinate past the table
   // adds the whole table's sums along it (the texture repeats).
   const int cols = grid.cols, rows = grid.rows;
-  const auto m = static_cast<size_t>(angles_);
+  const auto m = static_cast<size_t>(group_);
   const size_t line = static_cast<size_t>(cols + 1) * m;
   const bool wrap_x = x > cols, wrap_y = y > rows;
   if (wrap_x) x -= cols;
@@ -354,7 +365,7 @@ void CoefficientTables::cornerSums(const Grid& grid, double x, double y, std::sp
   const double* ty0 = grid.sat + static_cast<size_t>(rows) * line + static_cast<size_t>(i) * m;
   const double* txy = grid.sat + static_cast<size_t>(rows) * line + static_cast<size_t>(cols) * m;
   for (size_t k = 0; k < which.size(); ++k) {
-    const auto a = static_cast<size_t>(which[k]);
+    const size_t a = offsetOf(grid, which[k]);
     double v = w00 * c00[a] + w10 * c00[m + a] + w01 * c01[a] + w11 * c01[m + a];
     if (wrap_x) v += (1.0 - fy) * tx0[a] + fy * tx0[line + a];
     if (wrap_y) v += (1.0 - fx) * ty0[a] + fx * ty0[m + a];
@@ -424,7 +435,7 @@ double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<con
       const double tx = polygon[k].x() * inv_sub, ty = polygon[k].y() * inv_sub;
       turned[k] = {tx + ty, tx - ty};
     }
-    const Grid diagonal{diagonal_sat_.data(), diagonal_, diagonal_};
+    const Grid diagonal = diagonalGrid();
     if (integrateRectangle(diagonal, std::span<const Vec2>(turned.data(), polygon.size()), which,
                            out, rect_area))
       return rect_area;
@@ -477,23 +488,30 @@ double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<con
   };
   std::array<Strip, 64> strips;
   size_t gathered = 0;
+  const Grid grid = axisGrid();
+  std::array<size_t, 4 * kMaxDirections> offsets{};
+  const size_t used = std::min(which.size(), offsets.size());
+  for (size_t k = 0; k < used; ++k) offsets[k] = offsetOf(grid, which[k]);
+  const auto stride = static_cast<size_t>(group_);
   auto flush = [&] {
     for (size_t s = 0; s < gathered; ++s) {
       const Strip& st = strips[s];
-      for (size_t k = 0; k < which.size(); ++k) {
-        const auto i = static_cast<size_t>(which[k]);
-        out[k] += st.h * (st.b.sumAt(i, angles_) - st.a.sumAt(i, angles_));
-      }
+      for (size_t k = 0; k < used; ++k)
+        out[k] += st.h * (st.b.sumAt(offsets[k], stride) - st.a.sumAt(offsets[k], stride));
     }
     gathered = 0;
   };
-  const size_t lines = (2 * static_cast<size_t>(angles_) * sizeof(double) + 63) / 64;
+  // A point's angles of one phase lie side by side: the phases of the first two angles read.
+  const size_t lines = (2 * stride * sizeof(double) + 63) / 64;
   auto prefetch = [&](const RowPosition& p) {
-    for (size_t l = 0; l < lines; ++l) {
-      __builtin_prefetch(p.cell + 8 * l);
-      __builtin_prefetch(p.cell + p.line + 8 * l);
+    for (size_t k = 0; k < std::min<size_t>(used, 2); ++k) {
+      const double* c = p.cell + (offsets[k] / stride) * stride;
+      for (size_t l = 0; l < lines; ++l) {
+        __builtin_prefetch(c + 8 * l);
+        __builtin_prefetch(c + p.line + 8 * l);
+      }
     }
-    if (p.repeats != 0.0) __builtin_prefetch(p.total);
+    if (p.repeats != 0.0) __builtin_prefetch(p.total + offsets[0]);
   };
   size_t next = 0;
   const auto first = static_cast<long long>(std::floor(ymin));

@@ -57,6 +57,8 @@ struct TableLayout {
   // A second table on the grid turned by 45 degrees (square maps, where it fits the budget):
   // footprints turned by 45 degrees against the texture are rectangles there.
   bool diagonal = false;
+  // Angles stored side by side per point: N (the directions a contact reads together).
+  int group = 0;
   size_t bytes(int width, int height) const;
 };
 TableLayout tableLayout(int width, int height, int directions);
@@ -85,11 +87,28 @@ class CoefficientTables {
   // Where x (any real: the texture repeats) falls in row `row`, for its running sums.
   // A summed-area table of cols x rows cells (cols + 1 by rows + 1 values per angle) that
   // tiles the plane.
+  //
+  // Layout: the angles a contact reads together are side by side. Angle a is in phase
+  // a % phases (a plane of its own) at place a / phases of its point, a point holding `group`
+  // values: [(phase (rows + 1) + y) (cols + 1) + x] group + a / phases.
   struct Grid {
     const double* sat = nullptr;
     int cols = 0, rows = 0;
+    size_t plane = 0;  // values per phase
   };
-  Grid axisGrid() const { return {sat_.data(), cols_, rows_}; }
+  Grid makeGrid(const double* sat, int cols, int rows) const {
+    return {sat, cols, rows,
+            static_cast<size_t>(rows + 1) * static_cast<size_t>(cols + 1) *
+                static_cast<size_t>(group_)};
+  }
+  Grid axisGrid() const { return makeGrid(sat_.data(), cols_, rows_); }
+  Grid diagonalGrid() const { return makeGrid(diagonal_sat_.data(), diagonal_, diagonal_); }
+  size_t offsetOf(const Grid& grid, int angle) const {
+    return static_cast<size_t>(angle % phases_) * grid.plane + static_cast<size_t>(angle / phases_);
+  }
+  void sumColumns(const Grid& grid, double* sat) const;
+  void storeRow(const Grid& grid, double* sat, int row, int c,
+                std::span<const double> running) const;
   void buildDiagonalRow(const NormalMap& map, const GainMask* mask, float mu_max, int row);
   // The field at texel coordinates (tx, ty) (texel centres at integers), added to cell.
   void addFieldAt(const NormalMap& map, const GainMask* mask, float mu_max, double tx, double ty,
@@ -100,8 +119,9 @@ class CoefficientTables {
     const double* total = nullptr;  // line `row` at the row's end
     size_t line = 0;                // doubles from one line to the next
     double fraction = 0.0, repeats = 0.0;
-    double sumAt(size_t angle, int angles) const {
-      const size_t next = static_cast<size_t>(angles) + angle;
+    // angle: offsetOf's; stride: values per point.
+    double sumAt(size_t angle, size_t stride) const {
+      const size_t next = stride + angle;
       const double lo = cell[line + angle] - cell[angle];
       const double hi = cell[line + next] - cell[next];
       // Most footprints lie within one repeat: the row's total is then not read.
@@ -117,7 +137,7 @@ class CoefficientTables {
                           std::span<const int> which, std::span<double> out, double& area) const;
   RowPosition positionOf(int row, double x) const;
 
-  int cols_ = 0, rows_ = 0, sub_ = 1, angles_ = 0;
+  int cols_ = 0, rows_ = 0, sub_ = 1, angles_ = 0, group_ = 1, phases_ = 1;
   int map_width_ = 0, map_height_ = 0;
   double inv_cols_ = 1.0;
   std::vector<Vec2f> directions_;  // the tabulated e
