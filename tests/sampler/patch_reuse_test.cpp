@@ -99,9 +99,12 @@ TEST(PatchReuse, PlanarPathKeepsSamplesWithFreshCoefficients) {
   // The planar path notes the depth clip's decisions per face (its z range over the patch),
   // coarser than the raster path's per pixel: a little less is kept. A kept sample may also
   // meet a fresh one from the other path (a face tilting past 1e-3 rad), which differ by the
-  // raster path's sampling error (docs/samplers.md): a few more pairs beyond 0.005. How many
-  // faces cross that limit depends on the stack's exact motion (float tables gave 35 such
-  // pairs of about 18 000, double tables 71 to 88): the bound leaves room for that.
+  // raster path's sampling error (docs/samplers.md): a few more pairs beyond 0.005. So may
+  // one read from the turned table (a footprint within 1e-2 cell of a diamond) and one from
+  // the row spans (a box turned a little further), which discretise the field on different
+  // cells (up to about 1 % apart). How many contacts cross those limits depends on the stack's
+  // exact motion (float row sums: 35 pairs of about 18 000; double tables: 71 to 88; with the
+  // turned table: 172 of 18 750): the bound leaves room for that.
   auto world = scene("stacking.json", 0.1);
   auto checked = std::make_unique<CheckedReuse>(PatchPath::Planar);
   const CheckedReuse& check = *checked;
@@ -109,7 +112,7 @@ TEST(PatchReuse, PlanarPathKeepsSamplesWithFreshCoefficients) {
   reusedShare(*world, 100);
   EXPECT_GT(reusedShare(*world, 50), 0.7);
   EXPECT_GT(check.kept, 10000);
-  EXPECT_LT(check.far, check.kept / 150);
+  EXPECT_LT(check.far, check.kept / 80);
   EXPECT_LT(check.worst, 0.02);
 }
 
