@@ -39,17 +39,48 @@ double msBetween(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
+// The model of a contact: its pair's, else the sampler's (ContactAreaOptions::modelFor) for
+// the first shape of each side.
+FrictionModel modelOf(const ContactAreaOptions& area, std::span<const Body> bodies,
+                      const Contact& contact) {
+  if (area.pair_model.empty()) return area.model;
+  const patch::ShapeRange a = patch::shapesOf(bodies, contact, Side::A);
+  const patch::ShapeRange b = patch::shapesOf(bodies, contact, Side::B);
+  return area.modelFor(static_cast<int>(contact.body_a), a.first, static_cast<int>(contact.body_b),
+                       b.first);
+}
+
 }  // namespace
+
+FrictionModel ContactAreaOptions::modelFor(int body_a, int shape_a, int body_b, int shape_b) const {
+  if (pair_model.empty()) return model;
+  const auto classOf = [&](int body, int shape) {
+    auto it = surface_class.find({body, shape});
+    if (it == surface_class.end()) it = surface_class.find({body, -1});
+    return it == surface_class.end() ? -1 : it->second;
+  };
+  const int a = classOf(body_a, shape_a), b = classOf(body_b, shape_b);
+  if (a < 0 || b < 0) return model;
+  const auto found = pair_model.find({std::min(a, b), std::max(a, b)});
+  return found == pair_model.end() ? model : found->second;
+}
+
+bool ContactAreaOptions::anyContactArea() const {
+  if (model == FrictionModel::ContactArea) return true;
+  for (const auto& entry : pair_model)
+    if (entry.second == FrictionModel::ContactArea) return true;
+  return false;
+}
 
 // Scratch kept between calls: rasters, fragment arrays, sample directions.
 struct CpuPatchSampler::State {
   State(patch::MeshCache& shared, SimdCopy copy, const ContactAreaOptions& area_options,
         const patch::HeightCache& height_cache)
       : meshes(shared), simd(copy), area(area_options), heights(height_cache) {}
-  patch::MeshCache& meshes;  // the sampler's, shared by every thread's state
-  SimdCopy simd;             // the sampler's option, for every loop this state runs
-  const ContactAreaOptions& area;      // the sampler's option
-  const patch::HeightCache& heights;   // the sampler's, shared (read only while sampling)
+  patch::MeshCache& meshes;           // the sampler's, shared by every thread's state
+  SimdCopy simd;                      // the sampler's option, for every loop this state runs
+  const ContactAreaOptions& area;     // the sampler's option
+  const patch::HeightCache& heights;  // the sampler's, shared (read only while sampling)
   patch::AreaScratch area_scratch;
   patch::GeometryScratch geometry;
   std::array<patch::SurfaceRaster, 2> raster;  // A, B
@@ -185,12 +216,14 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   // Rasterise both surfaces and find P, then shade P into ploughing vectors (A, then B).
   rasterise(volume, ranges, images != nullptr);
   const size_t count = in_patch.size();
-  for (size_t s = 0; s < 2 && count > 0; ++s) {
+  // The contact-area model shades only the pixels in contact (finishWithArea).
+  const bool area_model = modelOf(area, bodies, contact) == FrictionModel::ContactArea;
+  for (size_t s = 0; s < 2 && count > 0 && !area_model; ++s) {
     patch::shadePloughing(volume, raster[s], in_patch, settings.mu_max, gx.data() + s * count,
                           gy.data() + s * count);
   }
   const Clock::time_point t1 = Clock::now();
-  if (area.model == FrictionModel::ContactArea) {
+  if (area_model) {
     finishWithArea(volume, ranges, contact, settings);
   } else {
     finishPaper(ranges, contact, settings, count);
@@ -220,8 +253,8 @@ void CpuPatchSampler::State::finishPaper(const patch::ShapeRange (&ranges)[2], C
 }
 
 void CpuPatchSampler::State::finishWithArea(const patch::Volume& volume,
-                                            const patch::ShapeRange (&ranges)[2],
-                                            Contact& contact, const FrictionSettings& settings) {
+                                            const patch::ShapeRange (&ranges)[2], Contact& contact,
+                                            const FrictionSettings& settings) {
   patch::AreaInputs in;
   in.options = &area;
   in.heights = &heights;
@@ -229,8 +262,8 @@ void CpuPatchSampler::State::finishWithArea(const patch::Volume& volume,
   in.gains = patch::gainsOf(ranges[0], ranges[1], settings.mu0);
   in.mu_max = settings.mu_max;
   in.simd = simd;
-  patch::finishAreaContact(volume, raster, in_patch, gx.data(), gy.data(),
-                           patch::mechanicalOf(area, contact, ranges), in, contact, area_scratch);
+  patch::finishAreaContact(volume, raster, in_patch, patch::mechanicalOf(area, contact, ranges), in,
+                           contact, area_scratch);
 }
 
 CpuPatchSampler::CpuPatchSampler(const CpuSamplerOptions& options)
@@ -257,7 +290,8 @@ CpuPatchSampler::~CpuPatchSampler() = default;
 void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& contact,
                                     const FrictionSettings& settings, PatchImages* images) {
   validatePatchSettings(settings, "cpu sampler");
-  if (options_.contact_area.model == FrictionModel::ContactArea) heights_->prepare(bodies, contact);
+  if (modelOf(options_.contact_area, bodies, contact) == FrictionModel::ContactArea)
+    heights_->prepare(bodies, contact);
   state_->sample(bodies, contact, settings, images);
 }
 
@@ -268,9 +302,11 @@ void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::spa
   reuse_->reuse(bodies, contacts, settings, reused_);
   reused_count_ = static_cast<int>(std::count(reused_.begin(), reused_.end(), uint8_t{1}));
   // The contact-area model's heights are made here, on the calling thread, for all threads.
-  if (options_.contact_area.model == FrictionModel::ContactArea) {
+  if (options_.contact_area.anyContactArea()) {
     for (size_t i = 0; i < contacts.size(); ++i)
-      if (!reused_[i]) heights_->prepare(bodies, contacts[i]);
+      if (!reused_[i] &&
+          modelOf(options_.contact_area, bodies, contacts[i]) == FrictionModel::ContactArea)
+        heights_->prepare(bodies, contacts[i]);
   }
   if (!pool_ || pool_->concurrency() == 1) {
     // One contact after the other; scratch is reused.

@@ -9,6 +9,7 @@
 #include "asperity/error.hpp"
 #include "asperity/geometry/shape_mesh.hpp"
 #include "asperity/texture/generator_heights.hpp"
+#include "sampler/patch_shade.hpp"
 #include "sampler/patch_texture.hpp"
 
 namespace asperity::patch {
@@ -19,7 +20,8 @@ void HeightCache::add(const Surface& surface) {
   Entry entry{surface.normal_map, nullptr};
   const GeneratorSpec& spec = surface.source.generator;
   if (!spec.name.empty() && generatorHasHeights(spec.name))
-    entry.heights = std::make_shared<const HeightMap>(generateHeightMap(spec, surface.texture_size));
+    entry.heights =
+        std::make_shared<const HeightMap>(generateHeightMap(spec, surface.texture_size));
   entries_.emplace(key, std::move(entry));
 }
 
@@ -67,8 +69,9 @@ struct PrimitiveHeights {
   const HeightMap* of(int32_t primitive) {
     if (primitive != id) {
       id = primitive;
-      const Material& m = primitive >= 0 ? raster.planars[static_cast<size_t>(primitive)].material
-                                         : raster.curveds[static_cast<size_t>(-1 - primitive)].material;
+      const Material& m = primitive >= 0
+                              ? raster.planars[static_cast<size_t>(primitive)].material
+                              : raster.curveds[static_cast<size_t>(-1 - primitive)].material;
       heights = cache.find(m.map);
     }
     return heights;
@@ -133,21 +136,21 @@ bool compositeOverPatch(const Volume& volume, const std::array<SurfaceRaster, 2>
   return true;
 }
 
-// The ploughing vectors of the pixels in contact, A's then B's, into scratch; returns their count.
-size_t gatherInContact(std::span<const uint32_t> in_patch, const float* gx, const float* gy,
-                       AreaScratch& s) {
-  const size_t count = in_patch.size();
-  s.gx.resize(2 * count);
-  s.gy.resize(2 * count);
-  size_t n = 0;
-  for (size_t k = 0; k < count; ++k) {
-    const uint32_t p = in_patch[k];
+// The pixels of P in contact (in P's order) into scratch, and their ploughing vectors, A's then
+// B's: only those enter the means, so only those are shaded. Returns their count.
+size_t shadeInContact(const Volume& volume, const std::array<SurfaceRaster, 2>& rasters,
+                      std::span<const uint32_t> in_patch, float mu_max, AreaScratch& s) {
+  s.touching.clear();
+  for (const uint32_t p : in_patch) {
     const int i = static_cast<int>(p & 0xffffu) - s.i0, j = static_cast<int>(p >> 16) - s.j0;
-    if (!s.mask[static_cast<size_t>(j * s.composite.width + i)]) continue;
-    s.gx[n] = gx[k], s.gy[n] = gy[k];
-    s.gx[count + n] = gx[count + k], s.gy[count + n] = gy[count + k];
-    ++n;
+    if (s.mask[static_cast<size_t>(j * s.composite.width + i)]) s.touching.push_back(p);
   }
+  const size_t n = s.touching.size();
+  s.gx.resize(2 * n);
+  s.gy.resize(2 * n);
+  for (size_t k = 0; k < 2 && n > 0; ++k)
+    shadePloughing(volume, rasters[k], s.touching, mu_max, s.gx.data() + k * n,
+                   s.gy.data() + k * n);
   return n;
 }
 
@@ -171,7 +174,7 @@ std::array<const Mechanical*, 2> mechanicalOf(const ContactAreaOptions& options,
 }
 
 int finishAreaContact(const Volume& volume, const std::array<SurfaceRaster, 2>& rasters,
-                      std::span<const uint32_t> in_patch, const float* gx, const float* gy,
+                      std::span<const uint32_t> in_patch,
                       const std::array<const Mechanical*, 2>& pair, const AreaInputs& in,
                       Contact& contact, AreaScratch& s) {
   const size_t count = in_patch.size();
@@ -194,15 +197,16 @@ int finishAreaContact(const Volume& volume, const std::array<SurfaceRaster, 2>& 
     real_area = area.real_area;
     contactMaskInto(s.summits, area, s.mask);
   }
-  const size_t touching = count > 0 ? gatherInContact(in_patch, gx, gy, s) : 0;
+  const size_t touching =
+      count > 0 ? shadeInContact(volume, rasters, in_patch, static_cast<float>(in.mu_max), s) : 0;
   // Adhesion, capped as the ploughing term is (a flat pair is in full contact at any load).
   PatchGains gains = in.gains;
   gains.mu0 = std::min(pairShear(*pair[0], *pair[1]) * real_area / load, in.mu_max);
   std::array<std::array<double, kMaxDirections>, 2> sums{};
   const size_t n = in.directions.size();
   for (size_t k = 0; k < 2 && touching > 0; ++k) {
-    accumulateDirectionalSums(std::span<const float>(s.gx.data() + k * count, touching),
-                              std::span<const float>(s.gy.data() + k * count, touching),
+    accumulateDirectionalSums(std::span<const float>(s.gx.data() + k * touching, touching),
+                              std::span<const float>(s.gy.data() + k * touching, touching),
                               in.directions, std::span<double>(sums[k].data(), n), in.simd);
   }
   finishContact(contact, std::span<const double>(sums[0].data(), n),
