@@ -58,46 +58,54 @@ float sampleHeight(const HeightMap& map, float u, float v) {
   return (1.0f - bv.weight) * bottom + bv.weight * top;
 }
 
-// The heights of one raster's primitives, looked up once per run of pixels of one primitive
-// (a map lookup per pixel would cost more than the rest of the model).
-struct PrimitiveHeights {
-  const SurfaceRaster& raster;
-  const HeightCache& cache;
-  int32_t id = std::numeric_limits<int32_t>::min();
-  const HeightMap* heights = nullptr;
+// The material of a raster's primitive (planar >= 0, curved < 0).
+const Material& materialOf(const SurfaceRaster& raster, int32_t id) {
+  return id >= 0 ? raster.planars[static_cast<size_t>(id)].material
+                 : raster.curveds[static_cast<size_t>(-1 - id)].material;
+}
 
-  const HeightMap* of(int32_t primitive) {
-    if (primitive != id) {
-      id = primitive;
-      const Material& m = primitive >= 0
-                              ? raster.planars[static_cast<size_t>(primitive)].material
-                              : raster.curveds[static_cast<size_t>(-1 - primitive)].material;
-      heights = cache.find(m.map);
+// The heights (m) of one raster's kept fragments at P's pixels, out of the surface toward the
+// other body, from the heights of each primitive's normal map at the fragment's uv (0: flat),
+// into out[k] for in_patch[k]. Pixels come in runs of one primitive: the primitive's heights
+// are looked up once per run, and a planar run's pixels are independent texture reads (a map
+// lookup or a branch per pixel would cost more than the rest of the model).
+void heightsOf(const Volume& volume, const SurfaceRaster& raster,
+               std::span<const uint32_t> in_patch, const HeightCache& cache, float* out) {
+  const int r = volume.resolution;
+  const auto primitiveAt = [&](size_t k) {
+    const uint32_t packed = in_patch[k];
+    return raster.primitive[(packed >> 16) * static_cast<uint32_t>(r) + (packed & 0xffffu)];
+  };
+  for (size_t k = 0; k < in_patch.size();) {
+    const int32_t id = primitiveAt(k);
+    size_t end = k + 1;
+    while (end < in_patch.size() && primitiveAt(end) == id) ++end;
+    const HeightMap* h = cache.find(materialOf(raster, id).map);
+    if (h == nullptr) {
+      std::fill(out + k, out + end, 0.0f);
+    } else if (id >= 0) {
+      const Planar& p = raster.planars[static_cast<size_t>(id)];
+      for (; k < end; ++k) {
+        const auto xf = static_cast<float>(volume.centreX(static_cast<int>(in_patch[k] & 0xffffu)));
+        const auto yf = static_cast<float>(volume.centreX(static_cast<int>(in_patch[k] >> 16)));
+        out[k] = sampleHeight(*h, p.uf[0] + p.uf[1] * xf + p.uf[2] * yf,
+                              p.vf[0] + p.vf[1] * xf + p.vf[2] * yf);
+      }
+    } else {
+      // Curved: the hit point and its analytic uv, as the shading finds them (patch_shade.cpp).
+      const Curved& c = raster.curveds[static_cast<size_t>(-1 - id)];
+      for (; k < end; ++k) {
+        const double x = volume.centreX(static_cast<int>(in_patch[k] & 0xffffu));
+        const double y = volume.centreX(static_cast<int>(in_patch[k] >> 16));
+        double z = 0.0;
+        castCurved(c, raster.side, x, y, z);
+        const SurfaceFrame sf =
+            surfaceFrameAt(*c.shape, -1, c.origin_local + c.to_local * Vec3(x, y, z));
+        out[k] = sampleHeight(*h, static_cast<float>(sf.uv.x()), static_cast<float>(sf.uv.y()));
+      }
     }
-    return heights;
+    k = end;
   }
-};
-
-// The height (m) of the kept fragment at pixel (i, j), out of its surface toward the other
-// body, from the heights of the primitive's normal map at the fragment's uv (0: flat).
-float heightAt(const Volume& volume, PrimitiveHeights& lookup, int i, int j) {
-  const SurfaceRaster& raster = lookup.raster;
-  const int32_t id = raster.primitive[static_cast<size_t>(j * volume.resolution + i)];
-  const HeightMap* h = lookup.of(id);
-  if (h == nullptr) return 0.0f;
-  const double x = volume.centreX(i), y = volume.centreX(j);
-  if (id >= 0) {
-    const Planar& p = raster.planars[static_cast<size_t>(id)];
-    const auto xf = static_cast<float>(x), yf = static_cast<float>(y);
-    return sampleHeight(*h, p.uf[0] + p.uf[1] * xf + p.uf[2] * yf,
-                        p.vf[0] + p.vf[1] * xf + p.vf[2] * yf);
-  }
-  // Curved: the hit point and its analytic uv, as the shading finds them (patch_shade.cpp).
-  const Curved& c = raster.curveds[static_cast<size_t>(-1 - id)];
-  double z = 0.0;
-  castCurved(c, raster.side, x, y, z);
-  const SurfaceFrame sf = surfaceFrameAt(*c.shape, -1, c.origin_local + c.to_local * Vec3(x, y, z));
-  return sampleHeight(*h, static_cast<float>(sf.uv.x()), static_cast<float>(sf.uv.y()));
 }
 
 // The composite roughness over P's bounding box (origin i0, j0 in the patch): at each pixel of
@@ -120,12 +128,16 @@ bool compositeOverPatch(const Volume& volume, const std::array<SurfaceRaster, 2>
   out.values.assign(static_cast<size_t>(out.width * out.height),
                     std::numeric_limits<float>::quiet_NaN());
   float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-  PrimitiveHeights a{rasters[0], cache}, b{rasters[1], cache};
-  for (const uint32_t p : in_patch) {
+  s.heights.resize(2 * in_patch.size());
+  float* const ha = s.heights.data();
+  float* const hb = ha + in_patch.size();
+  heightsOf(volume, rasters[0], in_patch, cache, ha);
+  heightsOf(volume, rasters[1], in_patch, cache, hb);
+  for (size_t k = 0; k < in_patch.size(); ++k) {
+    const uint32_t p = in_patch[k];
     const int i = static_cast<int>(p & 0xffffu), j = static_cast<int>(p >> 16);
     const auto idx = static_cast<size_t>(j * r + i);
-    const float c = heightAt(volume, a, i, j) + heightAt(volume, b, i, j) + rasters[0].key[idx] +
-                    rasters[1].key[idx];
+    const float c = ha[k] + hb[k] + rasters[0].key[idx] + rasters[1].key[idx];
     out.at(i - i0, j - j0) = c;
     lo = std::min(lo, c), hi = std::max(hi, c);
   }

@@ -42,6 +42,7 @@ struct AreaScratch {
   int i0 = 0, j0 = 0;
   SummitSet summits;
   std::vector<unsigned char> mask;
+  std::vector<float> heights;      // A's then B's heights at P's pixels
   std::vector<uint32_t> touching;  // the pixels of P in contact (Volume::pack)
   std::vector<float> gx, gy;       // ploughing vectors of the pixels in contact, A then B
 
@@ -51,6 +52,7 @@ struct AreaScratch {
     summits.summits.reserve(other.summits.summits.capacity());
     summits.surface.values.reserve(other.summits.surface.values.capacity());
     mask.reserve(other.mask.capacity());
+    heights.reserve(other.heights.capacity());
     touching.reserve(other.touching.capacity());
     gx.reserve(other.gx.capacity());
     gy.reserve(other.gy.capacity());
