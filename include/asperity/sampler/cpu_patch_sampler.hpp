@@ -78,10 +78,9 @@ class CpuPatchSampler : public FrictionProvider {
                            const FrictionSettings& settings) override;
   // Contacts are sampled in parallel on `pool`, each with its own thread's scratch.
   void setThreadPool(const ThreadPool* pool) override { pool_ = pool; }
-  // The contact-area model reads each contact's load; the paper's model does not.
-  bool readsNormalLoads() const override {
-    return options_.contact_area.model == FrictionModel::ContactArea;
-  }
+  // The contact-area model reads each contact's load (any pair that uses it); the paper's
+  // model does not.
+  bool readsNormalLoads() const override { return options_.contact_area.anyContactArea(); }
   // Patch and averaging times summed over the threads (CPU time, not wall time).
   double lastPatchTimeMs() const override { return patch_ms_; }
   double lastAveragingTimeMs() const override { return averaging_ms_; }
