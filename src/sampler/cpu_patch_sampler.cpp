@@ -40,7 +40,38 @@ double msBetween(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
+// The model of a contact: its pair's, else the sampler's (ContactAreaOptions::modelFor) for
+// the first shape of each side.
+FrictionModel modelOf(const ContactAreaOptions& area, std::span<const Body> bodies,
+                      const Contact& contact) {
+  if (area.pair_model.empty()) return area.model;
+  const patch::ShapeRange a = patch::shapesOf(bodies, contact, Side::A);
+  const patch::ShapeRange b = patch::shapesOf(bodies, contact, Side::B);
+  return area.modelFor(static_cast<int>(contact.body_a), a.first, static_cast<int>(contact.body_b),
+                       b.first);
+}
+
 }  // namespace
+
+FrictionModel ContactAreaOptions::modelFor(int body_a, int shape_a, int body_b, int shape_b) const {
+  if (pair_model.empty()) return model;
+  const auto classOf = [&](int body, int shape) {
+    auto it = surface_class.find({body, shape});
+    if (it == surface_class.end()) it = surface_class.find({body, -1});
+    return it == surface_class.end() ? -1 : it->second;
+  };
+  const int a = classOf(body_a, shape_a), b = classOf(body_b, shape_b);
+  if (a < 0 || b < 0) return model;
+  const auto found = pair_model.find({std::min(a, b), std::max(a, b)});
+  return found == pair_model.end() ? model : found->second;
+}
+
+bool ContactAreaOptions::anyContactArea() const {
+  if (model == FrictionModel::ContactArea) return true;
+  for (const auto& entry : pair_model)
+    if (entry.second == FrictionModel::ContactArea) return true;
+  return false;
+}
 
 // Scratch kept between calls: rasters, fragment arrays, sample directions.
 struct CpuPatchSampler::State {
@@ -49,14 +80,14 @@ struct CpuPatchSampler::State {
       : meshes(shared),
         tables(shared_tables),
         simd(opt.simd),
-        planar(opt.path == PatchPath::Planar && opt.contact_area.model == FrictionModel::Paper),
+        planar(opt.path == PatchPath::Planar && !opt.contact_area.anyContactArea()),
         area(opt.contact_area),
         heights(height_cache) {}
   patch::MeshCache& meshes;         // the sampler's, shared by every thread's state
   const patch::TableCache& tables;  // the sampler's; built before the contacts are sampled
   SimdCopy simd;                    // the sampler's option, for every loop this state runs
-  // Flat patches through the tables (patch_planar.hpp); the paper's model only (the
-  // contact-area model needs each pixel).
+  // Flat patches through the tables (patch_planar.hpp); only when no contact may use the
+  // contact-area model (it needs each pixel).
   bool planar;
   const ContactAreaOptions& area;     // the sampler's option
   const patch::HeightCache& heights;  // the sampler's, shared (read only while sampling)
@@ -209,12 +240,14 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   // Rasterise both surfaces and find P, then shade P into ploughing vectors (A, then B).
   rasterise(volume, ranges, images != nullptr);
   const size_t count = in_patch.size();
-  for (size_t s = 0; s < 2 && count > 0; ++s) {
+  // The contact-area model shades only the pixels in contact (finishWithArea).
+  const bool area_model = modelOf(area, bodies, contact) == FrictionModel::ContactArea;
+  for (size_t s = 0; s < 2 && count > 0 && !area_model; ++s) {
     patch::shadePloughing(volume, raster[s], in_patch, settings.mu_max, gx.data() + s * count,
                           gy.data() + s * count);
   }
   const Clock::time_point t1 = Clock::now();
-  if (area.model == FrictionModel::ContactArea) {
+  if (area_model) {
     finishWithArea(volume, ranges, contact, settings);
   } else {
     finishPaper(ranges, contact, settings, count);
@@ -253,8 +286,8 @@ void CpuPatchSampler::State::finishWithArea(const patch::Volume& volume,
   in.gains = patch::gainsOf(ranges[0], ranges[1], settings.mu0);
   in.mu_max = settings.mu_max;
   in.simd = simd;
-  patch::finishAreaContact(volume, raster, in_patch, gx.data(), gy.data(),
-                           patch::mechanicalOf(area, contact, ranges), in, contact, area_scratch);
+  patch::finishAreaContact(volume, raster, in_patch, patch::mechanicalOf(area, contact, ranges), in,
+                           contact, area_scratch);
 }
 
 bool CpuPatchSampler::State::planarFace(const patch::Volume& volume, const patch::ShapeRange& range,
@@ -368,7 +401,8 @@ void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& conta
                                     const FrictionSettings& settings, PatchImages* images) {
   validatePatchSettings(settings, "cpu sampler");
   if (options_.path == PatchPath::Planar) prepareTables(bodies, contact, settings);
-  if (options_.contact_area.model == FrictionModel::ContactArea) heights_->prepare(bodies, contact);
+  if (modelOf(options_.contact_area, bodies, contact) == FrictionModel::ContactArea)
+    heights_->prepare(bodies, contact);
   state_->sample(bodies, contact, settings, images);
 }
 
@@ -414,9 +448,11 @@ void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::spa
       if (!reused_[i]) prepareTables(bodies, contacts[i], settings);
   }
   // The contact-area model's heights are made here, on the calling thread, for all threads.
-  if (options_.contact_area.model == FrictionModel::ContactArea) {
+  if (options_.contact_area.anyContactArea()) {
     for (size_t i = 0; i < contacts.size(); ++i)
-      if (!reused_[i]) heights_->prepare(bodies, contacts[i]);
+      if (!reused_[i] &&
+          modelOf(options_.contact_area, bodies, contacts[i]) == FrictionModel::ContactArea)
+        heights_->prepare(bodies, contacts[i]);
   }
   if (!pool_ || pool_->concurrency() == 1) {
     // One contact after the other; scratch is reused.

@@ -9,6 +9,7 @@
 #include "asperity/error.hpp"
 #include "asperity/geometry/shape_mesh.hpp"
 #include "asperity/texture/generator_heights.hpp"
+#include "sampler/patch_shade.hpp"
 #include "sampler/patch_texture.hpp"
 
 namespace asperity::patch {
@@ -19,7 +20,8 @@ void HeightCache::add(const Surface& surface) {
   Entry entry{surface.normal_map, nullptr};
   const GeneratorSpec& spec = surface.source.generator;
   if (!spec.name.empty() && generatorHasHeights(spec.name))
-    entry.heights = std::make_shared<const HeightMap>(generateHeightMap(spec, surface.texture_size));
+    entry.heights =
+        std::make_shared<const HeightMap>(generateHeightMap(spec, surface.texture_size));
   entries_.emplace(key, std::move(entry));
 }
 
@@ -56,45 +58,54 @@ float sampleHeight(const HeightMap& map, float u, float v) {
   return (1.0f - bv.weight) * bottom + bv.weight * top;
 }
 
-// The heights of one raster's primitives, looked up once per run of pixels of one primitive
-// (a map lookup per pixel would cost more than the rest of the model).
-struct PrimitiveHeights {
-  const SurfaceRaster& raster;
-  const HeightCache& cache;
-  int32_t id = std::numeric_limits<int32_t>::min();
-  const HeightMap* heights = nullptr;
+// The material of a raster's primitive (planar >= 0, curved < 0).
+const Material& materialOf(const SurfaceRaster& raster, int32_t id) {
+  return id >= 0 ? raster.planars[static_cast<size_t>(id)].material
+                 : raster.curveds[static_cast<size_t>(-1 - id)].material;
+}
 
-  const HeightMap* of(int32_t primitive) {
-    if (primitive != id) {
-      id = primitive;
-      const Material& m = primitive >= 0 ? raster.planars[static_cast<size_t>(primitive)].material
-                                         : raster.curveds[static_cast<size_t>(-1 - primitive)].material;
-      heights = cache.find(m.map);
+// The heights (m) of one raster's kept fragments at P's pixels, out of the surface toward the
+// other body, from the heights of each primitive's normal map at the fragment's uv (0: flat),
+// into out[k] for in_patch[k]. Pixels come in runs of one primitive: the primitive's heights
+// are looked up once per run, and a planar run's pixels are independent texture reads (a map
+// lookup or a branch per pixel would cost more than the rest of the model).
+void heightsOf(const Volume& volume, const SurfaceRaster& raster,
+               std::span<const uint32_t> in_patch, const HeightCache& cache, float* out) {
+  const int r = volume.resolution;
+  const auto primitiveAt = [&](size_t k) {
+    const uint32_t packed = in_patch[k];
+    return raster.primitive[(packed >> 16) * static_cast<uint32_t>(r) + (packed & 0xffffu)];
+  };
+  for (size_t k = 0; k < in_patch.size();) {
+    const int32_t id = primitiveAt(k);
+    size_t end = k + 1;
+    while (end < in_patch.size() && primitiveAt(end) == id) ++end;
+    const HeightMap* h = cache.find(materialOf(raster, id).map);
+    if (h == nullptr) {
+      std::fill(out + k, out + end, 0.0f);
+    } else if (id >= 0) {
+      const Planar& p = raster.planars[static_cast<size_t>(id)];
+      for (; k < end; ++k) {
+        const auto xf = static_cast<float>(volume.centreX(static_cast<int>(in_patch[k] & 0xffffu)));
+        const auto yf = static_cast<float>(volume.centreX(static_cast<int>(in_patch[k] >> 16)));
+        out[k] = sampleHeight(*h, p.uf[0] + p.uf[1] * xf + p.uf[2] * yf,
+                              p.vf[0] + p.vf[1] * xf + p.vf[2] * yf);
+      }
+    } else {
+      // Curved: the hit point and its analytic uv, as the shading finds them (patch_shade.cpp).
+      const Curved& c = raster.curveds[static_cast<size_t>(-1 - id)];
+      for (; k < end; ++k) {
+        const double x = volume.centreX(static_cast<int>(in_patch[k] & 0xffffu));
+        const double y = volume.centreX(static_cast<int>(in_patch[k] >> 16));
+        double z = 0.0;
+        castCurved(c, raster.side, x, y, z);
+        const SurfaceFrame sf =
+            surfaceFrameAt(*c.shape, -1, c.origin_local + c.to_local * Vec3(x, y, z));
+        out[k] = sampleHeight(*h, static_cast<float>(sf.uv.x()), static_cast<float>(sf.uv.y()));
+      }
     }
-    return heights;
+    k = end;
   }
-};
-
-// The height (m) of the kept fragment at pixel (i, j), out of its surface toward the other
-// body, from the heights of the primitive's normal map at the fragment's uv (0: flat).
-float heightAt(const Volume& volume, PrimitiveHeights& lookup, int i, int j) {
-  const SurfaceRaster& raster = lookup.raster;
-  const int32_t id = raster.primitive[static_cast<size_t>(j * volume.resolution + i)];
-  const HeightMap* h = lookup.of(id);
-  if (h == nullptr) return 0.0f;
-  const double x = volume.centreX(i), y = volume.centreX(j);
-  if (id >= 0) {
-    const Planar& p = raster.planars[static_cast<size_t>(id)];
-    const auto xf = static_cast<float>(x), yf = static_cast<float>(y);
-    return sampleHeight(*h, p.uf[0] + p.uf[1] * xf + p.uf[2] * yf,
-                        p.vf[0] + p.vf[1] * xf + p.vf[2] * yf);
-  }
-  // Curved: the hit point and its analytic uv, as the shading finds them (patch_shade.cpp).
-  const Curved& c = raster.curveds[static_cast<size_t>(-1 - id)];
-  double z = 0.0;
-  castCurved(c, raster.side, x, y, z);
-  const SurfaceFrame sf = surfaceFrameAt(*c.shape, -1, c.origin_local + c.to_local * Vec3(x, y, z));
-  return sampleHeight(*h, static_cast<float>(sf.uv.x()), static_cast<float>(sf.uv.y()));
 }
 
 // The composite roughness over P's bounding box (origin i0, j0 in the patch): at each pixel of
@@ -117,12 +128,16 @@ bool compositeOverPatch(const Volume& volume, const std::array<SurfaceRaster, 2>
   out.values.assign(static_cast<size_t>(out.width * out.height),
                     std::numeric_limits<float>::quiet_NaN());
   float lo = std::numeric_limits<float>::infinity(), hi = -lo;
-  PrimitiveHeights a{rasters[0], cache}, b{rasters[1], cache};
-  for (const uint32_t p : in_patch) {
+  s.heights.resize(2 * in_patch.size());
+  float* const ha = s.heights.data();
+  float* const hb = ha + in_patch.size();
+  heightsOf(volume, rasters[0], in_patch, cache, ha);
+  heightsOf(volume, rasters[1], in_patch, cache, hb);
+  for (size_t k = 0; k < in_patch.size(); ++k) {
+    const uint32_t p = in_patch[k];
     const int i = static_cast<int>(p & 0xffffu), j = static_cast<int>(p >> 16);
     const auto idx = static_cast<size_t>(j * r + i);
-    const float c = heightAt(volume, a, i, j) + heightAt(volume, b, i, j) + rasters[0].key[idx] +
-                    rasters[1].key[idx];
+    const float c = ha[k] + hb[k] + rasters[0].key[idx] + rasters[1].key[idx];
     out.at(i - i0, j - j0) = c;
     lo = std::min(lo, c), hi = std::max(hi, c);
   }
@@ -133,21 +148,21 @@ bool compositeOverPatch(const Volume& volume, const std::array<SurfaceRaster, 2>
   return true;
 }
 
-// The ploughing vectors of the pixels in contact, A's then B's, into scratch; returns their count.
-size_t gatherInContact(std::span<const uint32_t> in_patch, const float* gx, const float* gy,
-                       AreaScratch& s) {
-  const size_t count = in_patch.size();
-  s.gx.resize(2 * count);
-  s.gy.resize(2 * count);
-  size_t n = 0;
-  for (size_t k = 0; k < count; ++k) {
-    const uint32_t p = in_patch[k];
+// The pixels of P in contact (in P's order) into scratch, and their ploughing vectors, A's then
+// B's: only those enter the means, so only those are shaded. Returns their count.
+size_t shadeInContact(const Volume& volume, const std::array<SurfaceRaster, 2>& rasters,
+                      std::span<const uint32_t> in_patch, float mu_max, AreaScratch& s) {
+  s.touching.clear();
+  for (const uint32_t p : in_patch) {
     const int i = static_cast<int>(p & 0xffffu) - s.i0, j = static_cast<int>(p >> 16) - s.j0;
-    if (!s.mask[static_cast<size_t>(j * s.composite.width + i)]) continue;
-    s.gx[n] = gx[k], s.gy[n] = gy[k];
-    s.gx[count + n] = gx[count + k], s.gy[count + n] = gy[count + k];
-    ++n;
+    if (s.mask[static_cast<size_t>(j * s.composite.width + i)]) s.touching.push_back(p);
   }
+  const size_t n = s.touching.size();
+  s.gx.resize(2 * n);
+  s.gy.resize(2 * n);
+  for (size_t k = 0; k < 2 && n > 0; ++k)
+    shadePloughing(volume, rasters[k], s.touching, mu_max, s.gx.data() + k * n,
+                   s.gy.data() + k * n);
   return n;
 }
 
@@ -171,7 +186,7 @@ std::array<const Mechanical*, 2> mechanicalOf(const ContactAreaOptions& options,
 }
 
 int finishAreaContact(const Volume& volume, const std::array<SurfaceRaster, 2>& rasters,
-                      std::span<const uint32_t> in_patch, const float* gx, const float* gy,
+                      std::span<const uint32_t> in_patch,
                       const std::array<const Mechanical*, 2>& pair, const AreaInputs& in,
                       Contact& contact, AreaScratch& s) {
   const size_t count = in_patch.size();
@@ -194,15 +209,16 @@ int finishAreaContact(const Volume& volume, const std::array<SurfaceRaster, 2>& 
     real_area = area.real_area;
     contactMaskInto(s.summits, area, s.mask);
   }
-  const size_t touching = count > 0 ? gatherInContact(in_patch, gx, gy, s) : 0;
+  const size_t touching =
+      count > 0 ? shadeInContact(volume, rasters, in_patch, static_cast<float>(in.mu_max), s) : 0;
   // Adhesion, capped as the ploughing term is (a flat pair is in full contact at any load).
   PatchGains gains = in.gains;
   gains.mu0 = std::min(pairShear(*pair[0], *pair[1]) * real_area / load, in.mu_max);
   std::array<std::array<double, kMaxDirections>, 2> sums{};
   const size_t n = in.directions.size();
   for (size_t k = 0; k < 2 && touching > 0; ++k) {
-    accumulateDirectionalSums(std::span<const float>(s.gx.data() + k * count, touching),
-                              std::span<const float>(s.gy.data() + k * count, touching),
+    accumulateDirectionalSums(std::span<const float>(s.gx.data() + k * touching, touching),
+                              std::span<const float>(s.gy.data() + k * touching, touching),
                               in.directions, std::span<double>(sums[k].data(), n), in.simd);
   }
   finishContact(contact, std::span<const double>(sums[0].data(), n),

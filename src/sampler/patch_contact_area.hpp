@@ -42,7 +42,9 @@ struct AreaScratch {
   int i0 = 0, j0 = 0;
   SummitSet summits;
   std::vector<unsigned char> mask;
-  std::vector<float> gx, gy;  // ploughing vectors of the pixels in contact, A then B
+  std::vector<float> heights;      // A's then B's heights at P's pixels
+  std::vector<uint32_t> touching;  // the pixels of P in contact (Volume::pack)
+  std::vector<float> gx, gy;       // ploughing vectors of the pixels in contact, A then B
 
   // Every buffer at least as large as other's (CpuPatchSampler::State::reserveLike).
   void reserveLike(const AreaScratch& other) {
@@ -50,6 +52,8 @@ struct AreaScratch {
     summits.summits.reserve(other.summits.summits.capacity());
     summits.surface.values.reserve(other.summits.surface.values.capacity());
     mask.reserve(other.mask.capacity());
+    heights.reserve(other.heights.capacity());
+    touching.reserve(other.touching.capacity());
     gx.reserve(other.gx.capacity());
     gy.reserve(other.gy.capacity());
   }
@@ -60,7 +64,7 @@ struct AreaInputs {
   const ContactAreaOptions* options = nullptr;
   const HeightCache* heights = nullptr;
   std::span<const Vec2> directions;
-  PatchGains gains;  // k_A, k_B (mu0 is replaced by the adhesion term)
+  PatchGains gains;     // k_A, k_B (mu0 is replaced by the adhesion term)
   double mu_max = 4.0;  // cap of the adhesion term, as of the ploughing one
   SimdCopy simd = SimdCopy::Auto;
 };
@@ -72,10 +76,10 @@ std::array<const Mechanical*, 2> mechanicalOf(const ContactAreaOptions& options,
                                               const Contact& contact,
                                               const ShapeRange (&ranges)[2]);
 
-// Fills contact.mu from the rasters, P (`in_patch`, Volume::pack) and the ploughing vectors
-// of P's pixels (gx, gy: A's count then B's). Returns the pixels in contact.
+// Fills contact.mu from the rasters and P (`in_patch`, Volume::pack), shading (Eqs. 3 to 6)
+// only the pixels in contact, the only ones the ploughing means take. Returns their count.
 int finishAreaContact(const Volume& volume, const std::array<SurfaceRaster, 2>& rasters,
-                      std::span<const uint32_t> in_patch, const float* gx, const float* gy,
+                      std::span<const uint32_t> in_patch,
                       const std::array<const Mechanical*, 2>& pair, const AreaInputs& in,
                       Contact& contact, AreaScratch& scratch);
 

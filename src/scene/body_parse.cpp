@@ -122,16 +122,61 @@ Surface parseSurface(JsonReader r, const std::string& base_dir) {
 
 namespace {
 
+// "mechanical": a preset's name, or {"E": Pa, "nu": 1, "H": Pa (0 = no plastic limit),
+// "tau": Pa}. Absent: none.
+std::optional<Mechanical> parseMechanical(JsonReader& r, const std::string& key) {
+  if (!r.has(key)) return std::nullopt;
+  const nlohmann::json& v = r.value().at(key);
+  if (v.is_string()) {
+    const std::string name = r.string(key, "");
+    for (const Mechanical& p : mechanicalPresets())
+      if (p.name == name) return p;
+    std::string known;
+    for (const Mechanical& p : mechanicalPresets()) known += (known.empty() ? "" : ", ") + p.name;
+    r.failAt(key, "unknown mechanical preset \"" + name + "\" (known: " + known + ")");
+  }
+  if (!v.is_object())
+    r.failAt(key,
+             "must be a preset name or {\"E\", \"nu\", \"H\", \"tau\"}, got " + describeValue(v));
+  JsonReader o = r.object(key);
+  constexpr double kPascals = 1e13;  // above any solid's modulus (diamond: 1.2e12 Pa)
+  Mechanical m;
+  m.name = "custom";
+  m.modulus = o.requiredNumber("E", Range::positive(kPascals));
+  m.poisson = o.requiredNumber("nu", Range::closed(0.0, 0.5));
+  m.hardness = o.number("H", 0.0, Range::nonNegative(kPascals));
+  m.shear = o.requiredNumber("tau", Range::positive(kPascals));
+  o.finish();
+  return m;
+}
+
+// The JSON of a surface entry less its "mechanical" key, read into `mechanical`: what both a
+// materials entry and an inline surface take beside a surface's keys.
+JsonReader withoutMechanical(JsonReader& r, std::optional<Mechanical>& mechanical,
+                             nlohmann::json& rest) {
+  mechanical = parseMechanical(r, "mechanical");
+  if (!mechanical) return r;
+  rest = r.value();
+  rest.erase("mechanical");
+  return JsonReader(rest, r.file(), r.pointer());
+}
+
 // A shape's "surface": an object, or the name of an entry of "materials" (a copy of that entry).
 // `names_color` tells whether it gives a base colour.
-Surface shapeSurface(JsonReader& r, const SceneDesc& scene, bool& names_color) {
+// An inline surface's "mechanical" values go to scene.surface_mechanical.
+Surface shapeSurface(JsonReader& r, SceneDesc& scene, size_t body, size_t shape,
+                     bool& names_color) {
   const nlohmann::json* v = r.has("surface") ? &r.value().at("surface") : nullptr;
   if (v && !v->is_string() && !v->is_object())
     r.failAt("surface", "must be an object or the name of a material, got " + describeValue(*v));
   if (!v || v->is_object()) {
-    const JsonReader object = r.object("surface");
-    names_color = object.value().contains("base_color");
-    return parseSurface(object, scene.base_dir);
+    JsonReader object = r.object("surface");
+    std::optional<Mechanical> mechanical;
+    nlohmann::json rest;
+    const JsonReader surface = withoutMechanical(object, mechanical, rest);
+    if (mechanical) scene.surface_mechanical[{body, shape}] = *mechanical;
+    names_color = surface.value().contains("base_color");
+    return parseSurface(surface, scene.base_dir);
   }
   // A name: one of the table's, listed when it is not.
   const std::string name = v->get<std::string>();
@@ -223,7 +268,7 @@ Shape parseShape(JsonReader r, SceneDesc& scene, size_t body, size_t shape) {
   s.density = r.number("density", s.density, Range::positive(1e6));
   parseGeometry(r, s, scene, body, shape);
   bool names_color = false;
-  s.surface = shapeSurface(r, scene, names_color);
+  s.surface = shapeSurface(r, scene, body, shape, names_color);
   // An asset's own base colour shows unless the surface names one.
   if (!scene.meshes.empty() && scene.meshes.back().body == body &&
       scene.meshes.back().shape == shape)
@@ -258,38 +303,6 @@ BodyDesc parseBody(JsonReader r, SceneDesc& scene, size_t index) {
 
 }  // namespace
 
-namespace {
-
-// "mechanical": a preset's name, or {"E": Pa, "nu": 1, "H": Pa (0 = no plastic limit),
-// "tau": Pa}. Absent: none.
-std::optional<Mechanical> parseMechanical(JsonReader& r, const std::string& key) {
-  if (!r.has(key)) return std::nullopt;
-  const nlohmann::json& v = r.value().at(key);
-  if (v.is_string()) {
-    const std::string name = r.string(key, "");
-    for (const Mechanical& p : mechanicalPresets())
-      if (p.name == name) return p;
-    std::string known;
-    for (const Mechanical& p : mechanicalPresets()) known += (known.empty() ? "" : ", ") + p.name;
-    r.failAt(key, "unknown mechanical preset \"" + name + "\" (known: " + known + ")");
-  }
-  if (!v.is_object())
-    r.failAt(key, "must be a preset name or {\"E\", \"nu\", \"H\", \"tau\"}, got " +
-                      describeValue(v));
-  JsonReader o = r.object(key);
-  constexpr double kPascals = 1e13;  // above any solid's modulus (diamond: 1.2e12 Pa)
-  Mechanical m;
-  m.name = "custom";
-  m.modulus = o.requiredNumber("E", Range::positive(kPascals));
-  m.poisson = o.requiredNumber("nu", Range::closed(0.0, 0.5));
-  m.hardness = o.number("H", 0.0, Range::nonNegative(kPascals));
-  m.shear = o.requiredNumber("tau", Range::positive(kPascals));
-  o.finish();
-  return m;
-}
-
-}  // namespace
-
 void parseMaterials(JsonReader& root, SceneDesc& scene) {
   JsonReader table = root.object("materials");
   for (const auto& entry : table.value().items()) {
@@ -298,13 +311,9 @@ void parseMaterials(JsonReader& root, SceneDesc& scene) {
     // Each entry is a surface object; the shapes that name it keep the name for saving.
     JsonReader entry_reader = table.object(name);
     SceneMaterial& m = scene.materials[name];
-    m.mechanical = parseMechanical(entry_reader, "mechanical");
     // The rest of the entry is a surface.
-    nlohmann::json rest = entry_reader.value();
-    rest.erase("mechanical");
-    const JsonReader surface = m.mechanical
-                                   ? JsonReader(rest, entry_reader.file(), entry_reader.pointer())
-                                   : entry_reader;
+    nlohmann::json rest;
+    const JsonReader surface = withoutMechanical(entry_reader, m.mechanical, rest);
     m.names_base_color = surface.value().contains("base_color");
     m.surface = parseSurface(surface, scene.base_dir);
     m.surface.source.material = name;

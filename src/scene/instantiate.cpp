@@ -1,5 +1,6 @@
 // From a scene description to a World: resolve every surface's normal map and mask, every OBJ
 // mesh, then create bodies, joints, springs and loads, and install the friction provider.
+#include <algorithm>
 #include <map>
 #include <mutex>
 
@@ -199,37 +200,77 @@ void createConnections(const SceneDesc& scene, World& world) {
   }
 }
 
-// The mechanical values of the material a surface names; throws where there are none.
-Mechanical mechanicalOf(const SceneDesc& scene, const Surface& surface) {
-  const std::string& name = surface.source.material;
-  const auto found = scene.materials.find(name);
-  if (found != scene.materials.end() && found->second.mechanical) return *found->second.mechanical;
-  throw Error("friction_model contact_area needs every surface to name a material with "
-              "\"mechanical\" values (E, nu, H, tau)" +
-              (name.empty() ? std::string(", this one names none")
-                            : "; material \"" + name + "\" has none"));
+// The mechanical values of shape k of body i: its inline surface's, else those of the material
+// it names; null where there are none.
+const Mechanical* mechanicalOf(const SceneDesc& scene, size_t i, size_t k) {
+  const auto own = scene.surface_mechanical.find({i, k});
+  if (own != scene.surface_mechanical.end()) return &own->second;
+  const auto found = scene.materials.find(scene.bodies[i].shapes[k].surface.source.material);
+  if (found != scene.materials.end() && found->second.mechanical) return &*found->second.mechanical;
+  return nullptr;
 }
 
-// The contact-area model's provider: the cpu sampler with each shape's mechanical values from
-// the material its surface names (body and shape indices are the world's: bodies are created
-// in scene order). Throws, naming the setting or the shape, where they do not fit the model.
+// Whether any contact of the scene may use the contact-area model: the scene's model, or a
+// pair's.
+bool usesContactArea(const SceneDesc& scene) {
+  if (scene.friction_model == FrictionModel::ContactArea) return true;
+  for (const ScenePair& p : scene.pairs)
+    if (p.friction_model == FrictionModel::ContactArea) return true;
+  return false;
+}
+
+// The contact-area model's provider: the cpu sampler with each shape's mechanical values (its
+// own or its material's; body and shape indices are the world's: bodies are created in scene
+// order), and the scene's pairs as classes of surfaces (one per material, by the material
+// table's order). Throws, naming the setting or the shape, where they do not fit the model.
 std::unique_ptr<FrictionProvider> contactAreaProvider(const SceneDesc& scene) {
-  withContext(scene, "/settings/friction_model", [&] {
+  std::string pointer = "/settings/friction_model";
+  for (size_t p = 0; p < scene.pairs.size() && scene.friction_model != FrictionModel::ContactArea;
+       ++p) {
+    if (scene.pairs[p].friction_model == FrictionModel::ContactArea) {
+      pointer = "/pairs/" + std::to_string(p) + "/friction_model";
+      break;
+    }
+  }
+  withContext(scene, pointer, [&] {
     if (scene.friction_provider != "cpu")
-      throw Error("contact_area needs friction_provider \"cpu\", got \"" +
-                  scene.friction_provider + "\"");
+      throw Error("contact_area needs friction_provider \"cpu\", got \"" + scene.friction_provider +
+                  "\"");
   });
   CpuSamplerOptions options;
   ContactAreaOptions& area = options.contact_area;
-  area.model = FrictionModel::ContactArea;
+  area.model = scene.friction_model;
   area.dt = scene.settings.dt / scene.settings.substeps;  // the impulse the solver keeps
+  std::map<std::string, int> classes;
+  for (const auto& entry : scene.materials)
+    classes.emplace(entry.first, static_cast<int>(classes.size()));
+  for (const ScenePair& p : scene.pairs) {
+    const int a = classes.at(p.materials[0]), b = classes.at(p.materials[1]);
+    area.pair_model[{std::min(a, b), std::max(a, b)}] = p.friction_model;
+  }
   for (size_t i = 0; i < scene.bodies.size(); ++i) {
     const std::vector<Shape>& shapes = scene.bodies[i].shapes;
     for (size_t k = 0; k < shapes.size(); ++k) {
-      const std::string pointer =
-          "/bodies/" + std::to_string(i) + "/shapes/" + std::to_string(k) + "/surface";
-      area.mechanical[{static_cast<int>(i), static_cast<int>(k)}] =
-          withContext(scene, pointer, [&] { return mechanicalOf(scene, shapes[k].surface); });
+      const std::pair<int, int> key{static_cast<int>(i), static_cast<int>(k)};
+      const auto named = classes.find(shapes[k].surface.source.material);
+      if (named != classes.end()) area.surface_class[key] = named->second;
+      if (const Mechanical* m = mechanicalOf(scene, i, k)) {
+        area.mechanical[key] = *m;
+        continue;
+      }
+      // Under the scene's contact_area every surface needs values (the pairs' materials were
+      // checked when the scene was read).
+      if (scene.friction_model != FrictionModel::ContactArea) continue;
+      const std::string& name = shapes[k].surface.source.material;
+      withContext(
+          scene, "/bodies/" + std::to_string(i) + "/shapes/" + std::to_string(k) + "/surface", [&] {
+            throw Error(
+                "friction_model contact_area needs every surface to have "
+                "\"mechanical\" values (E, nu, H, tau), its own or its "
+                "material's" +
+                (name.empty() ? std::string(", this one has none")
+                              : "; material \"" + name + "\" has none"));
+          });
     }
   }
   return std::make_unique<CpuPatchSampler>(options);
@@ -239,7 +280,7 @@ std::unique_ptr<FrictionProvider> contactAreaProvider(const SceneDesc& scene) {
 
 std::unique_ptr<World> instantiate(const SceneDesc& scene, const InstantiateOptions& options) {
   auto world = std::make_unique<World>(scene.settings);
-  if (scene.friction_model == FrictionModel::ContactArea) {
+  if (usesContactArea(scene)) {
     world->setFrictionProvider(contactAreaProvider(scene));
   } else {
     world->setFrictionProvider(withContext(scene, "/settings/friction_provider", [&] {

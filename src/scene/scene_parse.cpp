@@ -3,7 +3,9 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <set>
+#include <utility>
 
 #include "asperity/error.hpp"
 #include "asperity/scene/scene.hpp"
@@ -146,6 +148,51 @@ SceneLoad parseLoad(JsonReader r, const std::set<std::string>& names) {
   return l;
 }
 
+// "pairs": the friction model of contacts between two named materials, overriding the scene's
+// "friction_model" for them. Each unordered pair once; contact_area needs both materials'
+// "mechanical" values.
+void parsePairs(JsonReader& root, SceneDesc& scene) {
+  std::vector<JsonReader> entries = root.objects("pairs");
+  std::map<std::pair<std::string, std::string>, size_t> seen;
+  for (size_t i = 0; i < entries.size(); ++i) {
+    JsonReader& r = entries[i];
+    ScenePair pair;
+    std::vector<JsonReader> names = r.elements("materials");
+    if (!r.has("materials")) r.fail("missing key \"materials\" (two material names)");
+    if (names.size() != 2)
+      r.failAt("materials",
+               "must name two materials (the same one twice for a material on "
+               "itself), got " +
+                   std::to_string(names.size()));
+    if (!r.has("friction_model")) r.fail("missing key \"friction_model\"");
+    pair.friction_model = r.enumeration("friction_model", pair.friction_model,
+                                        EnumNames<FrictionModel>(kFrictionModelNames));
+    for (size_t k = 0; k < 2; ++k) {
+      if (!names[k].value().is_string())
+        names[k].fail("must be a material name, got " + describeValue(names[k].value()));
+      const std::string name = names[k].value().get<std::string>();
+      const auto found = scene.materials.find(name);
+      if (found == scene.materials.end()) {
+        std::vector<std::string> known;
+        for (const auto& entry : scene.materials) known.push_back(entry.first);
+        names[k].fail("unknown material \"" + name + "\" (" +
+                      (known.empty() ? "the scene has no \"materials\"" : oneOf(known)) + ")");
+      }
+      if (pair.friction_model == FrictionModel::ContactArea && !found->second.mechanical)
+        names[k].fail("friction_model contact_area needs \"mechanical\" values; material \"" +
+                      name + "\" has none");
+      pair.materials[k] = name;
+    }
+    const auto key = std::minmax(pair.materials[0], pair.materials[1]);
+    const auto [it, fresh] = seen.emplace(key, i);
+    if (!fresh)
+      r.failAt("materials", "the pair \"" + key.first + "\", \"" + key.second +
+                                "\" is already given at /pairs/" + std::to_string(it->second));
+    r.finish();
+    scene.pairs.push_back(pair);
+  }
+}
+
 // "camera": eye and target (m), vertical field of view in degrees.
 SceneCamera parseSceneCamera(JsonReader r) {
   SceneCamera c;
@@ -173,6 +220,7 @@ SceneDesc parseScene(const nlohmann::json& json, const std::string& file_for_mes
   parseSettings(root.object("settings"), out);
   parseMaterials(root, out);
   parseBodies(root, out);
+  parsePairs(root, out);
   // Joints, springs and loads refer to bodies by name.
   std::set<std::string> names;
   for (const BodyDesc& b : out.bodies) names.insert(b.name);

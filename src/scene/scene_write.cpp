@@ -99,6 +99,17 @@ void meshToJson(const SceneDesc& scene, size_t body, size_t index, json& out) {
   }
 }
 
+// Mechanical values (a material's or an inline surface's): the preset's name while they equal it,
+// else the numbers.
+json mechanicalToJson(const Mechanical& m) {
+  for (const Mechanical& p : mechanicalPresets()) {
+    if (p.name == m.name && p.modulus == m.modulus && p.poisson == m.poisson &&
+        p.hardness == m.hardness && p.shear == m.shear)
+      return m.name;
+  }
+  return {{"E", m.modulus}, {"nu", m.poisson}, {"H", m.hardness}, {"tau", m.shear}};
+}
+
 json shapeToJson(const SceneDesc& scene, size_t body, size_t index) {
   const Shape& s = scene.bodies[body].shapes[index];
   json out = {{"type", enumName(s.type, kShapeTypeNames)},
@@ -138,6 +149,10 @@ json shapeToJson(const SceneDesc& scene, size_t body, size_t index) {
   // A surface that showed its asset's base colour keeps doing so.
   const SceneMesh* m = meshSource(scene, body, index);
   if (m && m->asset_base_color) out["surface"].erase("base_color");
+  // An inline surface's own mechanical values.
+  const auto mechanical = scene.surface_mechanical.find({body, index});
+  if (mechanical != scene.surface_mechanical.end())
+    out["surface"]["mechanical"] = mechanicalToJson(mechanical->second);
   return out;
 }
 
@@ -168,18 +183,8 @@ json settingsToJson(const SceneDesc& scene) {
           {"patch_resolution", f.patch_resolution},
           {"reuse_pixels", f.reuse_pixels},
           {"friction_provider", scene.friction_provider},
-          {"friction_model", enumName(scene.friction_model,
-                                      EnumNames<FrictionModel>(kFrictionModelNames))}};
-}
-
-// A material's mechanical values: the preset's name while they equal it, else the numbers.
-json mechanicalToJson(const Mechanical& m) {
-  for (const Mechanical& p : mechanicalPresets()) {
-    if (p.name == m.name && p.modulus == m.modulus && p.poisson == m.poisson &&
-        p.hardness == m.hardness && p.shear == m.shear)
-      return m.name;
-  }
-  return {{"E", m.modulus}, {"nu", m.poisson}, {"H", m.hardness}, {"tau", m.shear}};
+          {"friction_model",
+           enumName(scene.friction_model, EnumNames<FrictionModel>(kFrictionModelNames))}};
 }
 
 // "materials": each entry as a surface, its base colour only when it gave one.
@@ -302,6 +307,15 @@ nlohmann::json sceneToJson(const SceneDesc& scene) {
               {"loads", loads}};
   // The materials table only when the scene has one.
   if (!scene.materials.empty()) out["materials"] = materialsToJson(scene);
+  // The pairs only when the scene has some.
+  if (!scene.pairs.empty()) {
+    json pairs = json::array();
+    for (const ScenePair& p : scene.pairs)
+      pairs.push_back({{"materials", {p.materials[0], p.materials[1]}},
+                       {"friction_model", enumName(p.friction_model, EnumNames<FrictionModel>(
+                                                                         kFrictionModelNames))}});
+    out["pairs"] = pairs;
+  }
   // The camera only when the scene chose one.
   if (scene.camera)
     out["camera"] = {{"eye", toJson(scene.camera->eye)},

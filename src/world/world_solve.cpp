@@ -59,10 +59,10 @@ FrameInputs World::frameInputs() {
 
 void World::computeFriction() {
   // Only started here: the solve stage builds its rows, then awaits the coefficients (a GPU
-  // provider works meanwhile). Each contact carries last step's normal impulse meanwhile, the
-  // load a load-dependent model (the contact-area one) reads.
+  // provider works meanwhile). A load-dependent model (the contact-area one) reads each
+  // contact's last normal impulse; others are spared the search.
   if (contacts_.empty()) return;
-  solver_->previousNormalImpulses(contacts_);
+  if (provider_->readsNormalLoads()) solver_->previousNormalImpulses(contacts_);
   provider_->startCoefficients(bodies_, contacts_, settings_.friction);
 }
 

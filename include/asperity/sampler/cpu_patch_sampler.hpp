@@ -52,6 +52,18 @@ struct ContactAreaOptions {
   // Each surface's mechanical values by (body index, shape index); shape index -1 stands for
   // every shape of the body. A contact on a surface without any is an error under the model.
   std::map<std::pair<int, int>, Mechanical> mechanical;
+  // Per pair of surfaces (a scene's "pairs"): each surface's class by (body index, shape
+  // index) as `mechanical` is keyed (shape -1: every shape of the body), and the model of a
+  // pair of classes, keyed (smaller class, larger class). A contact between two surfaces whose
+  // classes form a listed pair uses that pair's model; any other contact uses `model`. A
+  // contact's surface is its first shape's, as for `mechanical`.
+  std::map<std::pair<int, int>, int> surface_class;
+  std::map<std::pair<int, int>, FrictionModel> pair_model;
+
+  // The model of a contact between surface (body_a, shape_a) and surface (body_b, shape_b).
+  FrictionModel modelFor(int body_a, int shape_a, int body_b, int shape_b) const;
+  // Whether any contact may use the contact-area model.
+  bool anyContactArea() const;
 };
 
 struct CpuSamplerOptions {
@@ -82,6 +94,9 @@ class CpuPatchSampler : public FrictionProvider {
   // The planar path's tables of every textured box and plane of `bodies` (none on the raster
   // path).
   void prepare(std::span<const Body> bodies, const FrictionSettings& settings) override;
+  // The contact-area model reads each contact's load (any pair that uses it); the paper's
+  // model does not.
+  bool readsNormalLoads() const override { return options_.contact_area.anyContactArea(); }
   // Patch and averaging times summed over the threads (CPU time, not wall time).
   double lastPatchTimeMs() const override { return patch_ms_; }
   double lastAveragingTimeMs() const override { return averaging_ms_; }

@@ -63,6 +63,10 @@ class FrictionProvider {
     computeCoefficients(bodies, contacts, settings);
   }
   virtual void finishCoefficients() {}
+  // True when the coefficients depend on each contact's load: the world then gives every
+  // contact last step's normal impulse (Contact::lambda_n) before computeCoefficients. Finding
+  // them is a search per contact, so a provider that ignores the load says no.
+  virtual bool readsNormalLoads() const { return false; }
   // True when startCoefficients returns before the work is done, so that overlapping pays.
   virtual bool runsAsynchronously() const { return false; }
   // Time spent in the last call, split as the paper's Table 1 does (ms).

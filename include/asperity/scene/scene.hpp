@@ -5,6 +5,7 @@
 // whose names end in _deg). z is up.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <map>
 #include <memory>
@@ -77,14 +78,26 @@ struct SceneMaterial {
   bool names_base_color = false;
 };
 
+// An entry of the scene's "pairs": the friction model of contacts between surfaces that name
+// two materials (in either order; both may be the same), overriding the scene's
+// "friction_model" for them.
+struct ScenePair {
+  std::array<std::string, 2> materials;
+  FrictionModel friction_model = FrictionModel::Paper;
+};
+
 struct SceneDesc {
   WorldSettings settings;
   // The friction provider by name ("friction_provider"; InstantiateOptions::providers).
   std::string friction_provider = kDefaultFrictionProvider;
   // "friction_model": the paper's, or the real area of contact (provider "cpu" only; every
-  // surface then names a material with mechanical values).
+  // surface then has mechanical values, its own or its material's). "pairs" override it.
   FrictionModel friction_model = FrictionModel::Paper;
   std::map<std::string, SceneMaterial> materials;  // "materials", by name
+  std::vector<ScenePair> pairs;                    // "pairs": per pair friction models
+  // The "mechanical" values of surfaces written inline in a shape (not through "materials"),
+  // by (body index, shape index).
+  std::map<std::pair<size_t, size_t>, Mechanical> surface_mechanical;
   std::vector<BodyDesc> bodies;  // shapes' normal maps unresolved (files / generator specs)
   std::vector<SceneJoint> joints;
   std::vector<SceneSpring> springs;
