@@ -155,10 +155,9 @@ int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar*
 }  // namespace
 
 size_t TableLayout::bytes(int width, int height) const {
-  const size_t axis = (static_cast<size_t>(height) * static_cast<size_t>(sub) + 1) *
-                      (static_cast<size_t>(width) * static_cast<size_t>(sub) + 1);
-  const size_t side = 2 * static_cast<size_t>(width) + 1;
-  return (axis + (diagonal ? side * side : 0)) * static_cast<size_t>(angles) * sizeof(double);
+  const size_t rows = static_cast<size_t>(height) * static_cast<size_t>(sub);
+  const size_t points = static_cast<size_t>(width) * static_cast<size_t>(sub) + 1;
+  return rows * points * static_cast<size_t>(angles) * sizeof(float);
 }
 
 TableLayout tableLayout(int width, int height, int directions) {
@@ -168,11 +167,8 @@ TableLayout tableLayout(int width, int height, int directions) {
   // Fewer angles only where the budget needs it, as many as fit (a multiple of N).
   for (int n = angles; n >= directions; n -= directions) {
     for (int sub = kPreferredSub; sub >= 1; sub /= 2) {
-      TableLayout layout{sub, n, false, directions};
-      if (layout.bytes(width, height) > kTableBudgetBytes) continue;
-      layout.diagonal = width == height;
-      if (layout.bytes(width, height) > kTableBudgetBytes) layout.diagonal = false;
-      return layout;
+      const TableLayout layout{sub, n, directions};
+      if (layout.bytes(width, height) <= kTableBudgetBytes) return layout;
     }
   }
   return {1, 0};
@@ -199,87 +195,10 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
   }
   group_ = layout.group > 0 && angles_ % layout.group == 0 ? layout.group : angles_;
   phases_ = angles_ / group_;
-  if (layout.diagonal) diagonal_ = 2 * map.width();
-  const size_t axis_values = static_cast<size_t>(rows_ + 1) * static_cast<size_t>(cols_ + 1) *
-                             static_cast<size_t>(angles_);
-  sat_.assign(axis_values, 0.0);
-  diagonal_sat_.assign(layout.bytes(map.width(), map.height()) / sizeof(double) - axis_values, 0.0);
+  sums_.assign(layout.bytes(map.width(), map.height()) / sizeof(float), 0.0f);
   // Rows are independent: each thread writes its own running sums, in the same order of sums.
   forEachOn(pool, static_cast<size_t>(rows_), 4,
             [&](size_t row) { buildRow(map, mask, mu_max, static_cast<int>(row)); });
-  // Then the rows summed down the columns, on this thread: S(x, y) = the integral over
-  // [0, x) x [0, y) in cells (double: a 1024^2 table's totals keep 1e-10 of a cell).
-  sumColumns(axisGrid(), sat_.data());
-  if (diagonal_ == 0) return;
-  forEachOn(pool, static_cast<size_t>(diagonal_), 4,
-            [&](size_t row) { buildDiagonalRow(map, mask, mu_max, static_cast<int>(row)); });
-  sumColumns(diagonalGrid(), diagonal_sat_.data());
-}
-
-void CoefficientTables::sumColumns(const Grid& grid, double* sat) const {
-  const size_t line = static_cast<size_t>(grid.cols + 1) * static_cast<size_t>(group_);
-  for (int phase = 0; phase < phases_; ++phase) {
-    double* plane = sat + static_cast<size_t>(phase) * grid.plane;
-    for (size_t y = 2; y <= static_cast<size_t>(grid.rows); ++y) {
-      double* row = plane + y * line;
-      const double* below = row - line;
-      for (size_t k = 0; k < line; ++k) row[k] += below[k];
-    }
-  }
-}
-
-void CoefficientTables::storeRow(const Grid& grid, double* sat, int row, int c,
-                                 std::span<const double> running) const {
-  // Point (c + 1, row + 1) of the grid: each angle in its phase's plane.
-  const size_t point = (static_cast<size_t>(row + 1) * static_cast<size_t>(grid.cols + 1) +
-                        static_cast<size_t>(c + 1)) *
-                       static_cast<size_t>(group_);
-  for (size_t a = 0; a < running.size(); ++a)
-    sat[point + offsetOf(grid, static_cast<int>(a))] = running[a];
-}
-
-void CoefficientTables::addFieldAt(const NormalMap& map, const GainMask* mask, float mu_max,
-                                   double tx, double ty, std::span<double> cell) const {
-  const int jy = static_cast<int>(std::floor(ty));
-  const float wy = static_cast<float>(ty - jy);
-  const Vec3f* r0 = &map.at(0, wrapTexel(jy, map_height_));
-  const Vec3f* r1 = &map.at(0, wrapTexel(jy + 1, map_height_));
-  const int ix = static_cast<int>(std::floor(tx));
-  const float wx = static_cast<float>(tx - ix);
-  const int i0 = wrapTexel(ix, map_width_), i1 = wrapTexel(ix + 1, map_width_);
-  // The blend sampleNormal makes (unnormalised).
-  const Vec3f bottom = (1.0f - wx) * r0[i0] + wx * r0[i1];
-  const Vec3f top = (1.0f - wx) * r1[i0] + wx * r1[i1];
-  const Vec3f normal = (1.0f - wy) * bottom + wy * top;
-  float gain = 1.0f;
-  if (mask != nullptr) {
-    gain = sampleMask(*mask, static_cast<float>((tx + 0.5) / map_width_),
-                      static_cast<float>((ty + 0.5) / map_height_));
-  }
-  const Vec2f g = gain * ploughingVector(normal, Side::B, mu_max);
-  for (size_t a = 0; a < cell.size(); ++a) cell[a] += std::max(0.0f, g.dot(directions_[a]));
-}
-
-void CoefficientTables::buildDiagonalRow(const NormalMap& map, const GainMask* mask, float mu_max,
-                                         int row) {
-  // Cell (i, row) covers p in [i, i + 1), q in [row, row + 1) (texels); 2 x 2 points each (as
-  // many per texel's area as the axis table at two cells per texel).
-  constexpr int q = 2;
-  const auto m = static_cast<size_t>(angles_);
-  std::vector<double> cell(m), running(m, 0.0);
-  const Grid grid = diagonalGrid();
-  for (int c = 0; c < diagonal_; ++c) {
-    std::fill(cell.begin(), cell.end(), 0.0);
-    for (int sy = 0; sy < q; ++sy) {
-      const double qq = row + (sy + 0.5) / q;
-      for (int sx = 0; sx < q; ++sx) {
-        const double p = c + (sx + 0.5) / q;
-        addFieldAt(map, mask, mu_max, 0.5 * (p + qq), 0.5 * (p - qq), cell);
-      }
-    }
-    for (size_t a = 0; a < m; ++a) running[a] += cell[a] / (q * q);
-    storeRow(grid, diagonal_sat_.data(), row, c, running);
-  }
 }
 
 void CoefficientTables::buildRow(const NormalMap& map, const GainMask* mask, float mu_max,
@@ -287,9 +206,8 @@ void CoefficientTables::buildRow(const NormalMap& map, const GainMask* mask, flo
   const int q = kSamplesPerTexel / sub_;  // samples per cell along each axis
   const auto m = static_cast<size_t>(angles_);
   std::vector<double> cell(m), running(m, 0.0);
-  // The row's running sums go to table row row + 1 (row 0 stays 0); the columns are summed
-  // after every row is built.
-  const Grid grid = axisGrid();
+  // Point x of the row holds the sums over cells [0, x) (point 0 stays 0).
+  float* line = sums_.data() + static_cast<size_t>(row) * static_cast<size_t>(cols_ + 1) * m;
   const double inv_sub = 1.0 / sub_;
   for (int c = 0; c < cols_; ++c) {
     std::fill(cell.begin(), cell.end(), 0.0);
@@ -318,8 +236,13 @@ void CoefficientTables::buildRow(const NormalMap& map, const GainMask* mask, flo
         for (size_t a = 0; a < m; ++a) cell[a] += std::max(0.0f, g.dot(directions_[a]));
       }
     }
-    for (size_t a = 0; a < m; ++a) running[a] += cell[a] / (q * q);
-    storeRow(grid, sat_.data(), row, c, running);
+    float* point = line + static_cast<size_t>(c + 1) * m;
+    for (size_t a = 0; a < m; ++a) {
+      running[a] += cell[a] / (q * q);
+      const size_t place = (a % static_cast<size_t>(phases_)) * static_cast<size_t>(group_) +
+                           a / static_cast<size_t>(phases_);
+      point[place] = static_cast<float>(running[a]);
+    }
   }
 }
 
@@ -327,134 +250,20 @@ Vec2 CoefficientTables::cellOf(double u, double v) const {
   return {(u * map_width_ - 0.5) * sub_, (v * map_height_ - 0.5) * sub_};
 }
 
-CoefficientTables::RowPosition CoefficientTables::positionOf(int row, double x) const {
-  // Whole repeats of the row, then the cell and the fraction within it.
-  const auto m = static_cast<size_t>(group_);
-  RowPosition p;
-  p.repeats = std::floor(x * inv_cols_);
-  const double rem = x - p.repeats * cols_;
-  const int c = std::clamp(static_cast<int>(rem), 0, cols_ - 1);
-  p.fraction = rem - c;
-  const double* base = sat_.data() + static_cast<size_t>(row) * static_cast<size_t>(cols_ + 1) * m;
-  p.cell = base + static_cast<size_t>(c) * m;
-  p.total = base + static_cast<size_t>(cols_) * m;
-  p.line = static_cast<size_t>(cols_ + 1) * m;
-  return p;
-}
-
-void CoefficientTables::cornerSums(const Grid& grid, double x, double y, std::span<const int> which,
-                                   double sign, std::span<double> out) const {
-  // x in [0, 2 cols), y in [0, 2 rows) (see integrateRectangle): a coordinate past the table
-  // adds the whole table's sums along it (the texture repeats).
-  const int cols = grid.cols, rows = grid.rows;
-  const auto m = static_cast<size_t>(group_);
-  const size_t line = static_cast<size_t>(cols + 1) * m;
-  const bool wrap_x = x > cols, wrap_y = y > rows;
-  if (wrap_x) x -= cols;
-  if (wrap_y) y -= rows;
-  // The integral to (x, y) is bilinear within a cell: the cell's four corner sums, blended.
-  const int i = std::min(static_cast<int>(x), cols - 1),
-            j = std::min(static_cast<int>(y), rows - 1);
-  const double fx = x - i, fy = y - j;
-  const double w00 = (1.0 - fx) * (1.0 - fy), w10 = fx * (1.0 - fy), w01 = (1.0 - fx) * fy,
-               w11 = fx * fy;
-  const double* c00 = grid.sat + static_cast<size_t>(j) * line + static_cast<size_t>(i) * m;
-  const double* c01 = c00 + line;
-  // The whole table along x at height y (column cols), along y at x (row rows), and both.
-  const double* tx0 = grid.sat + static_cast<size_t>(j) * line + static_cast<size_t>(cols) * m;
-  const double* ty0 = grid.sat + static_cast<size_t>(rows) * line + static_cast<size_t>(i) * m;
-  const double* txy = grid.sat + static_cast<size_t>(rows) * line + static_cast<size_t>(cols) * m;
-  for (size_t k = 0; k < which.size(); ++k) {
-    const size_t a = offsetOf(grid, which[k]);
-    double v = w00 * c00[a] + w10 * c00[m + a] + w01 * c01[a] + w11 * c01[m + a];
-    if (wrap_x) v += (1.0 - fy) * tx0[a] + fy * tx0[line + a];
-    if (wrap_y) v += (1.0 - fx) * ty0[a] + fx * ty0[m + a];
-    if (wrap_x && wrap_y) v += txy[a];
-    out[k] += sign * v;
-  }
-}
-
-bool CoefficientTables::integrateRectangle(const Grid& grid, std::span<const Vec2> polygon,
-                                           std::span<const int> which, std::span<double> out,
-                                           double& area) const {
-  // A rectangle aligned with the grid: every vertex within kSnap cells of its bounding box's
-  // corners, and the polygon's area within kSnap x perimeter of the box's (three corners of a
-  // box make a triangle). The box then differs from the polygon by at most that area: boxes
-  // of a resting stack, yawed by up to about 3e-4 rad off square (or off 45 degrees, for the
-  // diagonal table) as they settle, still take this path, the mean off by at most 0.04 / side
-  // (in cells) of the largest cell value, far less for a field that does not sit on the
-  // boundary.
-  constexpr double kSnap = 1e-2;
-  double x0 = polygon[0].x(), x1 = x0, y0 = polygon[0].y(), y1 = y0;
-  for (const Vec2& p : polygon) {
-    x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x());
-    y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
-  }
-  for (const Vec2& p : polygon) {
-    const bool on_x = std::abs(p.x() - x0) <= kSnap || std::abs(p.x() - x1) <= kSnap;
-    const bool on_y = std::abs(p.y() - y0) <= kSnap || std::abs(p.y() - y1) <= kSnap;
-    if (!on_x || !on_y) return false;
-  }
-  double twice = 0.0;
-  for (size_t k = 0; k < polygon.size(); ++k) {
-    const Vec2& p = polygon[k];
-    const Vec2& q = polygon[(k + 1) % polygon.size()];
-    twice += p.x() * q.y() - q.x() * p.y();
-  }
-  const double box = (x1 - x0) * (y1 - y0);
-  if (!(box > 0.0) || std::abs(0.5 * std::abs(twice) - box) > 2.0 * kSnap * (x1 - x0 + y1 - y0))
-    return false;
-  // Shifted by whole repeats so that x0 in [0, cols), y0 in [0, rows); beyond one repeat of
-  // extent the strips handle it.
-  const double cols = grid.cols, rows = grid.rows;
-  if (x1 - x0 > cols || y1 - y0 > rows) return false;
-  const double sx = cols * std::floor(x0 / cols), sy = rows * std::floor(y0 / rows);
-  x0 = std::clamp(x0 - sx, 0.0, cols), x1 -= sx;
-  y0 = std::clamp(y0 - sy, 0.0, rows), y1 -= sy;
-  std::fill(out.begin(), out.end(), 0.0);
-  cornerSums(grid, x1, y1, which, 1.0, out);
-  cornerSums(grid, x0, y1, which, -1.0, out);
-  cornerSums(grid, x1, y0, which, -1.0, out);
-  cornerSums(grid, x0, y0, which, 1.0, out);
-  area = (x1 - x0) * (y1 - y0);
-  return true;
-}
-
-double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<const int> which,
-                                    std::span<double> out) const {
-  std::fill(out.begin(), out.end(), 0.0);
-  if (polygon.size() < 3) return 0.0;
-  double rect_area = 0.0;
-  if (integrateRectangle(axisGrid(), polygon, which, out, rect_area)) return rect_area;
-  if (diagonal_ > 0 && polygon.size() <= 32) {
-    // Turned by 45 degrees against the texture: a rectangle in p = tx + ty, q = tx - ty (the
-    // mean is the same in either measure: the area returned is in the diagonal cells).
-    std::array<Vec2, 32> turned{};
-    const double inv_sub = 1.0 / sub_;
-    for (size_t k = 0; k < polygon.size(); ++k) {
-      const double tx = polygon[k].x() * inv_sub, ty = polygon[k].y() * inv_sub;
-      turned[k] = {tx + ty, tx - ty};
-    }
-    const Grid diagonal = diagonalGrid();
-    if (integrateRectangle(diagonal, std::span<const Vec2>(turned.data(), polygon.size()), which,
-                           out, rect_area))
-      return rect_area;
-  }
-  double ymin = polygon[0].y(), ymax = ymin, area = 0.0;
-  for (size_t k = 0; k < polygon.size(); ++k) {
-    const Vec2& p = polygon[k];
-    const Vec2& q = polygon[(k + 1) % polygon.size()];
-    ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
-    area += p.x() * q.y() - q.x() * p.y();
-  }
-  // Each row of cells the polygon crosses, in strips between the row's bounds and the
-  // polygon's vertices: a strip's span ends move linearly, so its middle span is its mean for a
-  // uniform density (the running sums are exact along x; along y a row's density is its
-  // cells').
+double CoefficientTables::accumulate(std::span<const Vec2> polygon, std::span<const Range> ranges,
+                                     float* out) const {
+  const size_t vertices = std::min<size_t>(polygon.size(), 32);
+  if (vertices < 3) return 0.0;
+  // Shifted by whole repeats so that the polygon starts in the table's first repeat.
+  double xmin = polygon[0].x(), ymin = polygon[0].y();
+  for (size_t k = 1; k < vertices; ++k)
+    xmin = std::min(xmin, polygon[k].x()), ymin = std::min(ymin, polygon[k].y());
+  const double shift_x = cols_ * std::floor(xmin * inv_cols_);
+  const double shift_y = rows_ * std::floor(ymin / rows_);
+  std::array<Vec2, 32> poly{};
+  for (size_t k = 0; k < vertices; ++k) poly[k] = polygon[k] - Vec2(shift_x, shift_y);
+  double ymax = 0.0, area = 0.0;
   std::array<double, 32> ys{};
-  const size_t vertices = std::min(polygon.size(), ys.size());
-  for (size_t k = 0; k < vertices; ++k) ys[k] = polygon[k].y();
-  std::sort(ys.begin(), ys.begin() + static_cast<long>(vertices));
   // The polygon's sloped edges as x = x0 + (y - y0) slope over [y0, y1]: a strip's middle lies
   // strictly between vertices, where exactly two of them cross it (no division per strip).
   struct Sloped {
@@ -463,11 +272,16 @@ double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<con
   std::array<Sloped, 32> edges{};
   size_t sloped = 0;
   for (size_t k = 0; k < vertices; ++k) {
-    Vec2 p = polygon[k], q = polygon[(k + 1) % vertices];
+    Vec2 p = poly[k], q = poly[(k + 1) % vertices];
+    area += p.x() * q.y() - q.x() * p.y();
+    ys[k] = p.y();
+    ymax = std::max(ymax, p.y());
     if (p.y() == q.y()) continue;
     if (p.y() > q.y()) std::swap(p, q);
     edges[sloped++] = {p.y(), q.y(), p.x(), (q.x() - p.x()) / (q.y() - p.y())};
   }
+  std::sort(ys.begin(), ys.begin() + static_cast<long>(vertices));
+  ymin = ys[0];
   auto span = [&](double y, double& lo, double& hi) {
     lo = std::numeric_limits<double>::infinity();
     hi = -lo;
@@ -479,44 +293,76 @@ double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<con
       hi = std::max(hi, x);
     }
   };
-  // Strips are gathered first and their running sums read after: each strip's rows lie tens
-  // of kilobytes apart in the tables, so their reads are prefetched together instead of
-  // waiting for memory one strip at a time.
-  struct Strip {
-    RowPosition a, b;
-    double h;
+  // A span's end: the running sums at cell c and c + 1 (adjacent), the fraction between, and
+  // the whole row's sums where x lies beyond the first repeat (x < 2 cols: the footprints are
+  // far smaller than a repeat; further repeats add the whole row again).
+  struct End {
+    const float* cell;
+    const float* total;
+    float fraction, repeats;
   };
+  struct Strip {
+    End a, b;
+    float h;
+  };
+  const auto m = static_cast<size_t>(angles_);
+  const size_t line = static_cast<size_t>(cols_ + 1) * m;
+  auto endOf = [&](const float* row, double x) {
+    End e;
+    const double repeats = std::floor(x * inv_cols_);
+    const double rem = x - repeats * cols_;
+    const int c = std::clamp(static_cast<int>(rem), 0, cols_ - 1);
+    e.cell = row + static_cast<size_t>(c) * m;
+    e.total = row + static_cast<size_t>(cols_) * m;
+    e.fraction = static_cast<float>(rem - c);
+    e.repeats = static_cast<float>(repeats);
+    return e;
+  };
+  size_t width = 0;
+  for (const Range& r : ranges) width += static_cast<size_t>(r.len);
+  std::fill(out, out + width, 0.0f);
+  // Strips are gathered first and their sums read after: each strip's row lies kilobytes
+  // apart in the tables, so their reads are prefetched together instead of waiting for memory
+  // one strip at a time.
   std::array<Strip, 64> strips;
   size_t gathered = 0;
-  const Grid grid = axisGrid();
-  std::array<size_t, 4 * kMaxDirections> offsets{};
-  const size_t used = std::min(which.size(), offsets.size());
-  for (size_t k = 0; k < used; ++k) offsets[k] = offsetOf(grid, which[k]);
-  const auto stride = static_cast<size_t>(group_);
   auto flush = [&] {
     for (size_t s = 0; s < gathered; ++s) {
       const Strip& st = strips[s];
-      for (size_t k = 0; k < used; ++k)
-        out[k] += st.h * (st.b.sumAt(offsets[k], stride) - st.a.sumAt(offsets[k], stride));
+      float* o = out;
+      for (const Range& r : ranges) {
+        const float* a0 = st.a.cell + r.begin;
+        const float* a1 = a0 + m;
+        const float* b0 = st.b.cell + r.begin;
+        const float* b1 = b0 + m;
+        const float fa = st.a.fraction, fb = st.b.fraction, h = st.h;
+        for (int k = 0; k < r.len; ++k) {
+          const float va = a0[k] + fa * (a1[k] - a0[k]);
+          const float vb = b0[k] + fb * (b1[k] - b0[k]);
+          o[k] += h * (vb - va);
+        }
+        const float reps = st.b.repeats - st.a.repeats;
+        if (reps != 0.0f) {
+          const float* t = st.a.total + r.begin;
+          for (int k = 0; k < r.len; ++k) o[k] += h * reps * t[k];
+        }
+        o += r.len;
+      }
     }
     gathered = 0;
   };
-  // A point's angles of one phase lie side by side: the phases of the first two angles read.
-  const size_t lines = (2 * stride * sizeof(double) + 63) / 64;
-  auto prefetch = [&](const RowPosition& p) {
-    for (size_t k = 0; k < std::min<size_t>(used, 2); ++k) {
-      const double* c = p.cell + (offsets[k] / stride) * stride;
-      for (size_t l = 0; l < lines; ++l) {
-        __builtin_prefetch(c + 8 * l);
-        __builtin_prefetch(c + p.line + 8 * l);
-      }
+  auto prefetch = [&](const End& e) {
+    for (const Range& r : ranges) {
+      const char* p = reinterpret_cast<const char*>(e.cell + r.begin);
+      const char* q = reinterpret_cast<const char*>(e.cell + m + r.begin + r.len);
+      for (; p < q; p += 64) __builtin_prefetch(p);
+      __builtin_prefetch(q - 1);
     }
-    if (p.repeats != 0.0) __builtin_prefetch(p.total + offsets[0]);
   };
   size_t next = 0;
   const auto first = static_cast<long long>(std::floor(ymin));
   for (long long r = first; static_cast<double>(r) < ymax; ++r) {
-    const int row = positiveMod(r, rows_);
+    const float* row = sums_.data() + static_cast<size_t>(positiveMod(r, rows_)) * line;
     double y0 = std::max(static_cast<double>(r), ymin);
     const double row_end = std::min(static_cast<double>(r + 1), ymax);
     while (y0 < row_end) {
@@ -526,7 +372,7 @@ double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<con
       span(0.5 * (y0 + y1), lo, hi);
       if (hi > lo) {
         Strip& st = strips[gathered++];
-        st = {positionOf(row, lo), positionOf(row, hi), y1 - y0};
+        st = {endOf(row, lo), endOf(row, hi), static_cast<float>(y1 - y0)};
         prefetch(st.a);
         prefetch(st.b);
         if (gathered == strips.size()) flush();
@@ -536,6 +382,37 @@ double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<con
   }
   flush();
   return 0.5 * std::abs(area);
+}
+
+double CoefficientTables::integrateGroups(std::span<const Vec2> polygon, int phase, int count,
+                                          float* out) const {
+  const int first = phase % phases_;
+  const int second = (first + 1) % phases_;
+  std::array<Range, 2> ranges{};
+  size_t used = 1;
+  if (count < 2) {
+    ranges[0] = {first * group_, group_};
+  } else if (second == first + 1) {
+    ranges[0] = {first * group_, 2 * group_};  // side by side: one range
+  } else {
+    ranges[0] = {first * group_, group_};
+    ranges[1] = {second * group_, group_};
+    used = 2;
+  }
+  return accumulate(polygon, std::span<const Range>(ranges.data(), used), out);
+}
+
+double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<const int> which,
+                                    std::span<double> out) const {
+  std::fill(out.begin(), out.end(), 0.0);
+  std::vector<float> all(static_cast<size_t>(angles_));
+  const Range range{0, angles_};
+  const double area = accumulate(polygon, std::span<const Range>(&range, 1), all.data());
+  for (size_t k = 0; k < which.size(); ++k) {
+    const int a = which[k];
+    out[k] = all[static_cast<size_t>((a % phases_) * group_ + a / phases_)];
+  }
+  return area;
 }
 
 const CoefficientTables* TableCache::get(const std::shared_ptr<const NormalMap>& map,
@@ -647,23 +524,45 @@ void planarMeans(const Footprint& footprint, const PlanarSurface& surface, Side 
   const double delta = kTwoPi / angles;
   const double w0 = between ? std::sin((1.0 - w) * delta) / std::sin(delta) : 1.0;
   const double w1 = between ? std::sin(w * delta) / std::sin(delta) : 0.0;
-  std::array<int, 2 * kMaxDirections> which{};
-  const int per = between ? 2 : 1;
-  for (int k = 0; k < n; ++k) {
-    const int a =
-        positiveMod(static_cast<long long>(m0) + static_cast<long long>(k) * step, angles);
-    which[static_cast<size_t>(per * k)] = a;
-    if (between) which[static_cast<size_t>(per * k + 1)] = (a + 1) % angles;
+  if (tables->group() != n) {
+    // Tables laid out for another N (never from the cache, keyed by N): angle by angle.
+    std::array<int, 2 * kMaxDirections> which{};
+    const int per = between ? 2 : 1;
+    for (int k = 0; k < n; ++k) {
+      const int a =
+          positiveMod(static_cast<long long>(m0) + static_cast<long long>(k) * step, angles);
+      which[static_cast<size_t>(per * k)] = a;
+      if (between) which[static_cast<size_t>(per * k + 1)] = (a + 1) % angles;
+    }
+    std::array<double, 2 * kMaxDirections> sums{};
+    const auto used = static_cast<size_t>(per * n);
+    const double area = tables->integrate(std::span<const Vec2>(cells.data(), count),
+                                          std::span<const int>(which.data(), used),
+                                          std::span<double>(sums.data(), used));
+    if (!(area > 0.0)) return;
+    for (size_t k = 0; k < static_cast<size_t>(n); ++k) {
+      const double s = between ? w0 * sums[2 * k] + w1 * sums[2 * k + 1] : sums[k];
+      mean[k] = s / area;
+    }
+    return;
   }
-  std::array<double, 2 * kMaxDirections> sums{};
-  const auto used = static_cast<size_t>(per * n);
-  const double area = tables->integrate(std::span<const Vec2>(cells.data(), count),
-                                        std::span<const int>(which.data(), used),
-                                        std::span<double>(sums.data(), used));
+  // Angle m0 + k step (step = +-phases) is in m0's phase at place m0 / phases +- k; angle
+  // m0 + k step + 1 in the next phase at the same place, or, from the last phase, in phase 0
+  // one place on.
+  const int phases = tables->phases();
+  const int phase = m0 % phases, place = m0 / phases;
+  const int dir = step > 0 ? 1 : -1;
+  const int carry = phase == phases - 1 ? 1 : 0;
+  std::array<float, 2 * kMaxDirections> sums{};
+  const double area = tables->integrateGroups(std::span<const Vec2>(cells.data(), count), phase,
+                                              between ? 2 : 1, sums.data());
   if (!(area > 0.0)) return;
-  for (size_t k = 0; k < static_cast<size_t>(n); ++k) {
-    const double s = between ? w0 * sums[2 * k] + w1 * sums[2 * k + 1] : sums[k];
-    mean[k] = s / area;
+  const double inv_area = 1.0 / area;
+  for (int k = 0; k < n; ++k) {
+    const int at = positiveMod(static_cast<long long>(place) + static_cast<long long>(dir) * k, n);
+    double s = sums[static_cast<size_t>(at)];
+    if (between) s = w0 * s + w1 * sums[static_cast<size_t>(n + (at + carry) % n)];
+    mean[static_cast<size_t>(k)] = s * inv_area;
   }
 }
 

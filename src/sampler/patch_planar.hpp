@@ -54,10 +54,7 @@ inline constexpr size_t kTableBudgetBytes = size_t{64} << 20;
 struct TableLayout {
   int sub = 1;
   int angles = 0;
-  // A second table on the grid turned by 45 degrees (square maps, where it fits the budget):
-  // footprints turned by 45 degrees against the texture are rectangles there.
-  bool diagonal = false;
-  // Angles stored side by side per point: N (the directions a contact reads together).
+  // Angles stored side by side per phase: N (the directions a contact reads together).
   int group = 0;
   size_t bytes(int width, int height) const;
 };
@@ -71,7 +68,10 @@ class CoefficientTables {
                     const ThreadPool* pool);
 
   int angles() const { return angles_; }
-  size_t bytes() const { return (sat_.size() + diagonal_sat_.size()) * sizeof(double); }
+  // Angles per phase (see integrateGroups) and phases.
+  int group() const { return group_; }
+  int phases() const { return phases_; }
+  size_t bytes() const { return sums_.size() * sizeof(float); }
 
   // The integrals over a convex polygon given in cell coordinates (x = (u W - 1/2) sub, y the
   // same along v), counter-clockwise or clockwise, at the tabulated angles `which` (indices in
@@ -79,75 +79,32 @@ class CoefficientTables {
   double integrate(std::span<const Vec2> polygon, std::span<const int> which,
                    std::span<double> out) const;
 
+  // The same for every angle of `count` (1 or 2) consecutive phases from `phase` (the last
+  // phase is followed by phase 0): angle a is in phase a % phases at place a / phases; out
+  // holds count x group values, phase by phase. Returns the area in cells.
+  double integrateGroups(std::span<const Vec2> polygon, int phase, int count, float* out) const;
+
   // From texture coordinates (repeats) to the cell coordinates of integrate.
   Vec2 cellOf(double u, double v) const;
 
  private:
   void buildRow(const NormalMap& map, const GainMask* mask, float mu_max, int row);
-  // Where x (any real: the texture repeats) falls in row `row`, for its running sums.
-  // A summed-area table of cols x rows cells (cols + 1 by rows + 1 values per angle) that
-  // tiles the plane.
-  //
-  // Layout: the angles a contact reads together are side by side. Angle a is in phase
-  // a % phases (a plane of its own) at place a / phases of its point, a point holding `group`
-  // values: [(phase (rows + 1) + y) (cols + 1) + x] group + a / phases.
-  struct Grid {
-    const double* sat = nullptr;
-    int cols = 0, rows = 0;
-    size_t plane = 0;  // values per phase
+  // The row sums over [begin, begin + len) of a point's values (at most 2 ranges), each times
+  // a strip's height, added to out (ranges' values one after the other).
+  struct Range {
+    int begin = 0, len = 0;
   };
-  Grid makeGrid(const double* sat, int cols, int rows) const {
-    return {sat, cols, rows,
-            static_cast<size_t>(rows + 1) * static_cast<size_t>(cols + 1) *
-                static_cast<size_t>(group_)};
-  }
-  Grid axisGrid() const { return makeGrid(sat_.data(), cols_, rows_); }
-  Grid diagonalGrid() const { return makeGrid(diagonal_sat_.data(), diagonal_, diagonal_); }
-  size_t offsetOf(const Grid& grid, int angle) const {
-    return static_cast<size_t>(angle % phases_) * grid.plane + static_cast<size_t>(angle / phases_);
-  }
-  void sumColumns(const Grid& grid, double* sat) const;
-  void storeRow(const Grid& grid, double* sat, int row, int c,
-                std::span<const double> running) const;
-  void buildDiagonalRow(const NormalMap& map, const GainMask* mask, float mu_max, int row);
-  // The field at texel coordinates (tx, ty) (texel centres at integers), added to cell.
-  void addFieldAt(const NormalMap& map, const GainMask* mask, float mu_max, double tx, double ty,
-                  std::span<double> cell) const;
-  // A row's running sum is the difference of two lines of the 2D table (y = row, row + 1).
-  struct RowPosition {
-    const double* cell = nullptr;   // line `row` at the cell's start (angles side by side)
-    const double* total = nullptr;  // line `row` at the row's end
-    size_t line = 0;                // doubles from one line to the next
-    double fraction = 0.0, repeats = 0.0;
-    // angle: offsetOf's; stride: values per point.
-    double sumAt(size_t angle, size_t stride) const {
-      const size_t next = stride + angle;
-      const double lo = cell[line + angle] - cell[angle];
-      const double hi = cell[line + next] - cell[next];
-      // Most footprints lie within one repeat: the row's total is then not read.
-      const double whole = repeats != 0.0 ? repeats * (total[line + angle] - total[angle]) : 0.0;
-      return whole + lo + fraction * (hi - lo);
-    }
-  };
-  // The sums over [0, x] x [0, y] (x < 2 cols, y < 2 rows) at `which`, times sign, added to out.
-  void cornerSums(const Grid& grid, double x, double y, std::span<const int> which, double sign,
-                  std::span<double> out) const;
-  // integrate for a rectangle aligned with the grid within one repeat; false for any other.
-  bool integrateRectangle(const Grid& grid, std::span<const Vec2> polygon,
-                          std::span<const int> which, std::span<double> out, double& area) const;
-  RowPosition positionOf(int row, double x) const;
+  double accumulate(std::span<const Vec2> polygon, std::span<const Range> ranges,
+                    float* out) const;
 
   int cols_ = 0, rows_ = 0, sub_ = 1, angles_ = 0, group_ = 1, phases_ = 1;
   int map_width_ = 0, map_height_ = 0;
   double inv_cols_ = 1.0;
   std::vector<Vec2f> directions_;  // the tabulated e
-  // The summed-area table: S(x, y) = integral over [0, x) x [0, y) in cells, at
-  // [(y (cols + 1) + x) angles + a], x in [0, cols], y in [0, rows].
-  std::vector<double> sat_;
-  // The diagonal table (layout.diagonal): cells of one texel along p = tx + ty and q = tx - ty
-  // (half a texel's area), 2 W of them along each (the plane's period along both).
-  int diagonal_ = 0;
-  std::vector<double> diagonal_sat_;
+  // Running sums along each row of cells (float: a row's values stay small): R(row, x) = the
+  // integral over [0, x) of the row, at [(row (cols + 1) + x) angles + place], x in
+  // [0, cols]; place = (a % phases) group + a / phases (a phase's angles side by side).
+  std::vector<float> sums_;
 };
 
 // Tables by texture identity, shared by every body whose surface uses the same map. get() builds

@@ -48,9 +48,10 @@ TEST(PlanarTables, UniformSlopeIntegratesToTheClosedForm) {
   }
 }
 
-TEST(PlanarTables, AlignedRectanglesMatchTheRowSpans) {
-  // A texture-aligned rectangle is read from four corners of the 2D table; the same rectangle
-  // with one vertex pushed out by 1e-9 cells goes through the row spans: the same integrals.
+TEST(PlanarTables, AlignedRectanglesMatchTheirSplitCopies) {
+  // A texture-aligned rectangle (one span per row of cells, over several repeats) and the same
+  // rectangle with one vertex pushed out by 1e-9 cells (its rows split at the vertex, float
+  // running sums): the same integrals.
   auto map = std::make_shared<NormalMap>(16, 12);
   for (int j = 0; j < 12; ++j)
     for (int i = 0; i < 16; ++i) {
@@ -78,14 +79,13 @@ TEST(PlanarTables, AlignedRectanglesMatchTheRowSpans) {
     EXPECT_NEAR(area, (b[2] - b[0]) * (b[3] - b[1]), 1e-9);
     EXPECT_NEAR(area, area_spans, 1e-6);
     for (size_t a = 0; a < which.size(); ++a)
-      EXPECT_NEAR(fast[a] / area, spans[a] / area_spans, 1e-7) << "box " << b[0] << " angle " << a;
+      EXPECT_NEAR(fast[a] / area, spans[a] / area_spans, 1e-5) << "box " << b[0] << " angle " << a;
   }
 }
 
-TEST(PlanarTables, DiamondsReadTheDiagonalTable) {
-  // A square turned by 45 degrees against the texture is a rectangle of the diagonal table; the
-  // same square with one vertex pushed out by 1e-9 cells goes through the axis table's row
-  // spans. The two tables discretise the field on different cells: close, not equal.
+TEST(PlanarTables, DiamondsMatchTheirSplitCopies) {
+  // A square turned by 45 degrees against the texture and the same square with one vertex
+  // pushed out by 1e-9 cells (its strips split there): close, at any repeat.
   auto map = std::make_shared<NormalMap>(16, 16);
   for (int j = 0; j < 16; ++j)
     for (int i = 0; i < 16; ++i) {
@@ -94,7 +94,6 @@ TEST(PlanarTables, DiamondsReadTheDiagonalTable) {
                           .normalized();
     }
   const patch::TableLayout layout = patch::tableLayout(16, 16, 4);
-  ASSERT_TRUE(layout.diagonal);
   const patch::CoefficientTables tables(*map, nullptr, 4.0f, layout, nullptr);
   std::vector<int> which(static_cast<size_t>(tables.angles()));
   for (int a = 0; a < tables.angles(); ++a) which[static_cast<size_t>(a)] = a;
