@@ -17,10 +17,14 @@ namespace {
 // Sample points per texel along each axis when a cell's mean is taken (midpoint rule over the
 // bilinear patch): 4 x 4 per texel, whatever the cells.
 constexpr int kSamplesPerTexel = 4;
-// Cells per texel preferred when the budget allows: a boundary cell then counts a quarter of a
-// texel with its mean instead of a whole one. At 1, a cell straddling a sawtooth's steep face
-// put crawling_worm's contacts up to 58 % from the raster path (9 % at 2).
+// Cells per texel preferred where the tables stay within kFineBytes: a boundary cell then
+// counts a quarter of a texel with its mean instead of a whole one. At 1, a cell straddling a
+// sawtooth's steep face put crawling_worm's contacts (a 64 x 64 map) up to 58 % from the
+// raster path (9 % at 2). Larger maps take one cell per texel: their tables (8 MB for
+// 256 x 256 at 32 angles) then stay within the caches' reach; each contact reads half the
+// rows (stacking, oak_stacks, the bench's 256 x 256 maps agree as closely at 1).
 constexpr int kPreferredSub = 2;
+constexpr size_t kFineBytes = size_t{9} << 20;
 // Tabulated angles at least this many (a multiple of N): an angle step of 11.25 degrees.
 constexpr int kMinAngles = 32;
 
@@ -168,7 +172,8 @@ TableLayout tableLayout(int width, int height, int directions) {
   for (int n = angles; n >= directions; n -= directions) {
     for (int sub = kPreferredSub; sub >= 1; sub /= 2) {
       const TableLayout layout{sub, n, directions};
-      if (layout.bytes(width, height) <= kTableBudgetBytes) return layout;
+      const size_t bytes = layout.bytes(width, height);
+      if (bytes <= kTableBudgetBytes && (sub == 1 || bytes <= kFineBytes)) return layout;
     }
   }
   return {1, 0};
