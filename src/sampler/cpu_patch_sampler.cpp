@@ -361,6 +361,7 @@ bool CpuPatchSampler::State::samplePlanar(const patch::Volume& volume,
     const patch::Footprint footprint =
         patch::footprintOf(volume, *surfaces[0].face, *surfaces[1].face);
     pixels = footprint.pixels;
+    if (pixels < patch::kMinPlanarPixels) return false;
     for (size_t s = 0; s < 2 && pixels > 0; ++s) {
       patch::planarMeans(footprint, surfaces[s], s == 0 ? Side::A : Side::B, directions,
                          std::span<double>(means[s].data(), n));

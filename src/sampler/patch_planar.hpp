@@ -46,6 +46,10 @@ namespace asperity::patch {
 // the meso normals then turn by at most this, g by at most about (2 / pi) kMaxTilt (6e-4).
 inline constexpr double kMaxTilt = 1e-3;
 
+// Footprints with fewer pixel centres than this take the raster path: they are cheap to
+// rasterise, and there the tables' boundary cells weigh most.
+inline constexpr int kMinPlanarPixels = 32;
+
 // At most this many bytes of tables per (texture, mask, mu_max, direction set).
 inline constexpr size_t kTableBudgetBytes = size_t{64} << 20;
 
