@@ -102,7 +102,7 @@ bool keepsCentre(const Volume& volume, const Planar& prim, double x, double y) {
 }
 
 struct Polygon {
-  std::array<Vec2, 24> v{};
+  std::array<Vec2, 24> v;  // the first count are set
   int count = 0;
 };
 
@@ -115,11 +115,25 @@ Polygon patchSquare(const Volume& volume) {
 }
 
 void clipBy(Polygon& poly, const HalfPlanes& h) {
-  for (int k = 0; k < h.count && poly.count > 0; ++k) {
-    Polygon next;
+  // Ping-pong between poly and a scratch polygon; a half-plane that keeps every vertex is
+  // skipped.
+  Polygon scratch;
+  Polygon* in = &poly;
+  Polygon* out = &scratch;
+  for (int k = 0; k < h.count && in->count > 0; ++k) {
     const auto& pl = h.plane[static_cast<size_t>(k)];
-    next.count = clipHalfPlane(poly.v.data(), poly.count, pl[0], pl[1], pl[2], next.v.data());
-    poly = next;
+    bool all = true;
+    for (int i = 0; i < in->count && all; ++i) {
+      const Vec2& p = in->v[static_cast<size_t>(i)];
+      all = pl[0] * p.x() + pl[1] * p.y() + pl[2] >= 0.0;
+    }
+    if (all) continue;
+    out->count = clipHalfPlane(in->v.data(), in->count, pl[0], pl[1], pl[2], out->v.data());
+    std::swap(in, out);
+  }
+  if (in != &poly) {
+    poly.count = in->count;
+    std::copy(in->v.begin(), in->v.begin() + in->count, poly.v.begin());
   }
 }
 
@@ -301,29 +315,83 @@ Vec2 CoefficientTables::cellOf(double u, double v) const {
   return {(u * map_width_ - 0.5) * sub_, (v * map_height_ - 0.5) * sub_};
 }
 
+namespace {
+
+// A span's end in a row of running sums: the sums at the cell's start (the next point holds
+// those at its end), the fraction of the cell, and the row's whole repeats before it.
+struct SpanEnd {
+  const float* cell;
+  float fraction, repeats;
+};
+struct Strip {
+  SpanEnd a, b;
+  const float* total;  // the row's sums over one repeat
+  float h;
+};
+
+// The strips' h (R(b) - R(a)) over W values from `begin` of each point, added to out.
+template <int W>
+void addStrips(const Strip* strips, size_t count, size_t stride, int begin, float* out) {
+  float acc[W] = {};
+  for (size_t s = 0; s < count; ++s) {
+    const Strip& st = strips[s];
+    const float* __restrict a0 = st.a.cell + begin;
+    const float* __restrict b0 = st.b.cell + begin;
+    const float fa = st.a.fraction, fb = st.b.fraction, h = st.h;
+    for (int k = 0; k < W; ++k) {
+      const float va = a0[k] + fa * (a0[stride + static_cast<size_t>(k)] - a0[k]);
+      const float vb = b0[k] + fb * (b0[stride + static_cast<size_t>(k)] - b0[k]);
+      acc[k] += h * (vb - va);
+    }
+  }
+  for (int k = 0; k < W; ++k) out[k] += acc[k];
+}
+
+void addStrips(const Strip* strips, size_t count, size_t stride, int begin, int len, float* out) {
+  switch (len) {
+    case 4: return addStrips<4>(strips, count, stride, begin, out);
+    case 8: return addStrips<8>(strips, count, stride, begin, out);
+    case 16: return addStrips<16>(strips, count, stride, begin, out);
+    case 32: return addStrips<32>(strips, count, stride, begin, out);
+    default: break;
+  }
+  for (size_t s = 0; s < count; ++s) {
+    const Strip& st = strips[s];
+    const float* a0 = st.a.cell + begin;
+    const float* b0 = st.b.cell + begin;
+    for (int k = 0; k < len; ++k) {
+      const float va = a0[k] + st.a.fraction * (a0[stride + static_cast<size_t>(k)] - a0[k]);
+      const float vb = b0[k] + st.b.fraction * (b0[stride + static_cast<size_t>(k)] - b0[k]);
+      out[k] += st.h * (vb - va);
+    }
+  }
+}
+
+}  // namespace
+
 double CoefficientTables::accumulate(std::span<const Vec2> polygon, std::span<const Range> ranges,
                                      float* out) const {
   const size_t vertices = std::min<size_t>(polygon.size(), 32);
+  size_t width = 0;
+  for (const Range& r : ranges) width += static_cast<size_t>(r.len);
+  std::fill(out, out + width, 0.0f);
   if (vertices < 3) return 0.0;
   // Shifted by whole repeats so that the polygon starts in the table's first repeat.
   double xmin = polygon[0].x(), ymin = polygon[0].y();
   for (size_t k = 1; k < vertices; ++k)
     xmin = std::min(xmin, polygon[k].x()), ymin = std::min(ymin, polygon[k].y());
-  const double shift_x = cols_ * std::floor(xmin * inv_cols_);
-  const double shift_y = rows_ * std::floor(ymin / rows_);
-  std::array<Vec2, 32> poly{};
-  for (size_t k = 0; k < vertices; ++k) poly[k] = polygon[k] - Vec2(shift_x, shift_y);
-  double ymax = 0.0, area = 0.0;
-  std::array<double, 32> ys{};
+  const Vec2 shift(cols_ * std::floor(xmin * inv_cols_), rows_ * std::floor(ymin / rows_));
+  double ymax = -std::numeric_limits<double>::infinity(), area = 0.0;
+  std::array<double, 32> ys;
   // The polygon's sloped edges as x = x0 + (y - y0) slope over [y0, y1]: a strip's middle lies
   // strictly between vertices, where exactly two of them cross it (no division per strip).
   struct Sloped {
     double y0, y1, x0, slope;
   };
-  std::array<Sloped, 32> edges{};
+  std::array<Sloped, 32> edges;
   size_t sloped = 0;
   for (size_t k = 0; k < vertices; ++k) {
-    Vec2 p = poly[k], q = poly[(k + 1) % vertices];
+    Vec2 p = polygon[k] - shift, q = polygon[(k + 1) % vertices] - shift;
     area += p.x() * q.y() - q.x() * p.y();
     ys[k] = p.y();
     ymax = std::max(ymax, p.y());
@@ -333,82 +401,49 @@ double CoefficientTables::accumulate(std::span<const Vec2> polygon, std::span<co
   }
   std::sort(ys.begin(), ys.begin() + static_cast<long>(vertices));
   ymin = ys[0];
-  auto span = [&](double y, double& lo, double& hi) {
-    lo = std::numeric_limits<double>::infinity();
-    hi = -lo;
-    for (size_t k = 0; k < sloped; ++k) {
-      const Sloped& e = edges[k];
-      if (y < e.y0 || y > e.y1) continue;
-      const double x = e.x0 + (y - e.y0) * e.slope;
-      lo = std::min(lo, x);
-      hi = std::max(hi, x);
-    }
-  };
-  // A span's end: the running sums at cell c and c + 1 (adjacent), the fraction between, and
-  // the whole row's sums where x lies beyond the first repeat (x < 2 cols: the footprints are
-  // far smaller than a repeat; further repeats add the whole row again).
-  struct End {
-    const float* cell;
-    const float* total;
-    float fraction, repeats;
-  };
-  struct Strip {
-    End a, b;
-    float h;
-  };
   const auto m = static_cast<size_t>(angles_);
   const size_t line = static_cast<size_t>(cols_ + 1) * m;
   auto endOf = [&](const float* row, double x) {
-    End e;
-    const double repeats = std::floor(x * inv_cols_);
+    // x < 2 cols nearly always (footprints far smaller than a repeat); any x is handled.
+    const double repeats = x < cols_ ? 0.0 : std::floor(x * inv_cols_);
     const double rem = x - repeats * cols_;
     const int c = std::clamp(static_cast<int>(rem), 0, cols_ - 1);
-    e.cell = row + static_cast<size_t>(c) * m;
-    e.total = row + static_cast<size_t>(cols_) * m;
-    e.fraction = static_cast<float>(rem - c);
-    e.repeats = static_cast<float>(repeats);
-    return e;
+    return SpanEnd{row + static_cast<size_t>(c) * m, static_cast<float>(rem - c),
+                   static_cast<float>(repeats)};
   };
-  size_t width = 0;
-  for (const Range& r : ranges) width += static_cast<size_t>(r.len);
-  std::fill(out, out + width, 0.0f);
   // Strips are gathered first and their sums read after: each strip's row lies kilobytes
   // apart in the tables, so their reads are prefetched together instead of waiting for memory
   // one strip at a time.
   std::array<Strip, 64> strips;
   size_t gathered = 0;
+  bool repeats = false;
   auto flush = [&] {
-    for (size_t s = 0; s < gathered; ++s) {
-      const Strip& st = strips[s];
-      float* o = out;
-      for (const Range& r : ranges) {
-        const float* a0 = st.a.cell + r.begin;
-        const float* a1 = a0 + m;
-        const float* b0 = st.b.cell + r.begin;
-        const float* b1 = b0 + m;
-        const float fa = st.a.fraction, fb = st.b.fraction, h = st.h;
-        for (int k = 0; k < r.len; ++k) {
-          const float va = a0[k] + fa * (a1[k] - a0[k]);
-          const float vb = b0[k] + fb * (b1[k] - b0[k]);
-          o[k] += h * (vb - va);
+    float* o = out;
+    for (const Range& r : ranges) {
+      addStrips(strips.data(), gathered, m, r.begin, r.len, o);
+      if (repeats) {
+        for (size_t s = 0; s < gathered; ++s) {
+          const Strip& st = strips[s];
+          const float reps = st.b.repeats - st.a.repeats;
+          if (reps == 0.0f) continue;
+          for (int k = 0; k < r.len; ++k) o[k] += st.h * reps * st.total[r.begin + k];
         }
-        const float reps = st.b.repeats - st.a.repeats;
-        if (reps != 0.0f) {
-          const float* t = st.a.total + r.begin;
-          for (int k = 0; k < r.len; ++k) o[k] += h * reps * t[k];
-        }
-        o += r.len;
       }
+      o += r.len;
     }
     gathered = 0;
+    repeats = false;
   };
-  auto prefetch = [&](const End& e) {
-    for (const Range& r : ranges) {
-      const char* p = reinterpret_cast<const char*>(e.cell + r.begin);
-      const char* q = reinterpret_cast<const char*>(e.cell + m + r.begin + r.len);
-      for (; p < q; p += 64) __builtin_prefetch(p);
-      __builtin_prefetch(q - 1);
-    }
+  const size_t first_byte = static_cast<size_t>(ranges[0].begin) * sizeof(float);
+  const size_t last_byte =
+      static_cast<size_t>(ranges.back().begin + ranges.back().len) * sizeof(float) - 1;
+  auto prefetch = [&](const SpanEnd& e) {
+    const char* p = reinterpret_cast<const char*>(e.cell);
+    const size_t point = m * sizeof(float);
+    __builtin_prefetch(p + first_byte);
+    __builtin_prefetch(p + last_byte);
+    __builtin_prefetch(p + point + first_byte);
+    __builtin_prefetch(p + point + last_byte);
   };
   size_t next = 0;
   const auto first = static_cast<long long>(std::floor(ymin));
@@ -419,11 +454,20 @@ double CoefficientTables::accumulate(std::span<const Vec2> polygon, std::span<co
     while (y0 < row_end) {
       while (next < vertices && ys[next] <= y0) ++next;
       const double y1 = next < vertices ? std::min(ys[next], row_end) : row_end;
-      double lo = 0.0, hi = 0.0;
-      span(0.5 * (y0 + y1), lo, hi);
+      const double y = 0.5 * (y0 + y1);
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (size_t k = 0; k < sloped; ++k) {
+        const Sloped& e = edges[k];
+        if (y < e.y0 || y > e.y1) continue;
+        const double x = e.x0 + (y - e.y0) * e.slope;
+        lo = std::min(lo, x);
+        hi = std::max(hi, x);
+      }
       if (hi > lo) {
         Strip& st = strips[gathered++];
-        st = {endOf(row, lo), endOf(row, hi), static_cast<float>(y1 - y0)};
+        st = {endOf(row, lo), endOf(row, hi), row + static_cast<size_t>(cols_) * m,
+              static_cast<float>(y1 - y0)};
+        repeats = repeats || st.b.repeats != st.a.repeats;
         prefetch(st.a);
         prefetch(st.b);
         if (gathered == strips.size()) flush();
