@@ -24,7 +24,7 @@ constexpr int kSamplesPerTexel = 4;
 // 256 x 256 at 32 angles) then stay within the caches' reach; each contact reads half the
 // rows (stacking, oak_stacks, the bench's 256 x 256 maps agree as closely at 1).
 constexpr int kPreferredSub = 2;
-constexpr size_t kFineBytes = size_t{9} << 20;
+constexpr size_t kFineBytes = size_t{4} << 20;
 // Tabulated angles at least this many (a multiple of N): an angle step of 11.25 degrees.
 constexpr int kMinAngles = 32;
 
@@ -135,6 +135,16 @@ void clipBy(Polygon& poly, const HalfPlanes& h) {
     poly.count = in->count;
     std::copy(in->v.begin(), in->v.begin() + in->count, poly.v.begin());
   }
+}
+
+double areaOf(const Polygon& poly) {
+  double twice = 0.0;
+  for (int k = 0; k < poly.count; ++k) {
+    const Vec2& p = poly.v[static_cast<size_t>(k)];
+    const Vec2& q = poly.v[static_cast<size_t>((k + 1) % poly.count)];
+    twice += p.x() * q.y() - q.x() * p.y();
+  }
+  return 0.5 * std::abs(twice);
 }
 
 // Pixel centres of row j inside `poly` and kept by every listed face, counted.
@@ -253,11 +263,14 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
                 ", angles " + std::to_string(angles_) + ")");
   }
   directions_.resize(static_cast<size_t>(angles_));
+  units_.resize(static_cast<size_t>(angles_));
   for (int a = 0; a < angles_; ++a) {
     const double t = kTwoPi * a / angles_;
+    units_[static_cast<size_t>(a)] = Vec2(std::cos(t), std::sin(t));
     directions_[static_cast<size_t>(a)] =
         Vec2f(static_cast<float>(std::cos(t)), static_cast<float>(std::sin(t)));
   }
+  sin_step_ = std::sin(kTwoPi / angles_);
   group_ = layout.group > 0 && angles_ % layout.group == 0 ? layout.group : angles_;
   phases_ = angles_ / group_;
   sums_.assign(layout.bytes(map.width(), map.height()) / sizeof(float), 0.0f);
@@ -548,13 +561,7 @@ bool coversNoCentre(const Volume& volume, const Planar& prim) {
   // A face seen edge-on (a box's side at the patch), its area within the depth clip far below
   // a pixel's: counted as covering none without testing the centres. It may still hold one
   // with probability about its area in pixels (1e-3), and then changes one pixel of P.
-  double twice = 0.0;
-  for (int k = 0; k < poly.count; ++k) {
-    const Vec2& p = poly.v[static_cast<size_t>(k)];
-    const Vec2& q = poly.v[static_cast<size_t>((k + 1) % poly.count)];
-    twice += p.x() * q.y() - q.x() * p.y();
-  }
-  if (0.5 * std::abs(twice) < kSliverPixels * volume.pixel * volume.pixel) return true;
+  if (areaOf(poly) < kSliverPixels * volume.pixel * volume.pixel) return true;
   const Planar* faces[] = {&prim};
   return centresIn(volume, poly, faces) == 0;
 }
@@ -565,6 +572,8 @@ void noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& 
   edges.count -= 2;  // the edges alone: the depth clip is what is being decided
   clipBy(poly, edges);
   if (poly.count < 3) return;
+  // A face seen edge-on has no pixels to decide (coversNoCentre's slivers).
+  if (areaOf(poly) < kSliverPixels * volume.pixel * volume.pixel) return;
   const double h = volume.half_depth;
   double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;
   for (int k = 0; k < poly.count; ++k) {
@@ -627,9 +636,16 @@ void planarMeans(const Footprint& footprint, const PlanarSurface& surface, Side 
   constexpr double kOnGrid = 5e-3;
   if (w > 1.0 - kOnGrid) m0 = (m0 + 1) % angles, w = 0.0;
   const bool between = w > kOnGrid;
-  const double delta = kTwoPi / angles;
-  const double w0 = between ? std::sin((1.0 - w) * delta) / std::sin(delta) : 1.0;
-  const double w1 = between ? std::sin(w * delta) / std::sin(delta) : 0.0;
+  // w0 = sin((1 - w) delta) / sin(delta), w1 = sin(w delta) / sin(delta): e's components
+  // along the two tabulated directions, from cross products.
+  double w0 = 1.0, w1 = 0.0;
+  if (between) {
+    const Vec2& ea = tables->unit(m0);
+    const Vec2& eb = tables->unit((m0 + 1) % angles);
+    const double scale = 1.0 / (std::hypot(ex, ey) * tables->sinStep());
+    w0 = (ex * eb.y() - ey * eb.x()) * scale;
+    w1 = (ea.x() * ey - ea.y() * ex) * scale;
+  }
   if (tables->group() != n) {
     // Tables laid out for another N (never from the cache, keyed by N): angle by angle.
     std::array<int, 2 * kMaxDirections> which{};
@@ -664,11 +680,16 @@ void planarMeans(const Footprint& footprint, const PlanarSurface& surface, Side 
                                               between ? 2 : 1, sums.data());
   if (!(area > 0.0)) return;
   const double inv_area = 1.0 / area;
+  int at = place;
   for (int k = 0; k < n; ++k) {
-    const int at = positiveMod(static_cast<long long>(place) + static_cast<long long>(dir) * k, n);
     double s = sums[static_cast<size_t>(at)];
-    if (between) s = w0 * s + w1 * sums[static_cast<size_t>(n + (at + carry) % n)];
+    if (between) {
+      const int next = at + carry == n ? 0 : at + carry;
+      s = w0 * s + w1 * sums[static_cast<size_t>(n + next)];
+    }
     mean[static_cast<size_t>(k)] = s * inv_area;
+    at += dir;
+    at = at == n ? 0 : (at < 0 ? n - 1 : at);
   }
 }
 

@@ -76,6 +76,9 @@ class CoefficientTables {
   int group() const { return group_; }
   int phases() const { return phases_; }
   size_t bytes() const { return sums_.size() * sizeof(float); }
+  // Tabulated angle a's direction, and the sine of the step between angles.
+  const Vec2& unit(int a) const { return units_[static_cast<size_t>(a)]; }
+  double sinStep() const { return sin_step_; }
 
   // The integrals over a convex polygon given in cell coordinates (x = (u W - 1/2) sub, y the
   // same along v), counter-clockwise or clockwise, at the tabulated angles `which` (indices in
@@ -105,6 +108,8 @@ class CoefficientTables {
   int map_width_ = 0, map_height_ = 0;
   double inv_cols_ = 1.0;
   std::vector<Vec2f> directions_;  // the tabulated e
+  std::vector<Vec2> units_;        // the same in double
+  double sin_step_ = 0.0;
   // Running sums along each row of cells (float: a row's values stay small): R(row, x) = the
   // integral over [0, x) of the row, at [(row (cols + 1) + x) angles + place], x in
   // [0, cols]; place = (a % phases) group + a / phases (a phase's angles side by side).
