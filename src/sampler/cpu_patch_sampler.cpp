@@ -121,7 +121,35 @@ struct CpuPatchSampler::State {
   void finishWithArea(const patch::Volume& volume, const patch::ShapeRange (&ranges)[2],
                       Contact& contact, const FrictionSettings& settings);
   void reserveLike(const State& other);
+  // tables.find through a small list of the tables this state has found (the cache is a
+  // map keyed by four values; a contact looks up one or two textures).
+  const patch::CoefficientTables* findTables(const patch::Material& material,
+                                             const FrictionSettings& settings);
+  struct FoundTables {
+    const NormalMap* map;
+    const GainMask* mask;
+    const patch::CoefficientTables* tables;
+  };
+  std::vector<FoundTables> found;
+  float found_mu_max = -1.0f;
+  int found_directions = 0;
 };
+
+const patch::CoefficientTables* CpuPatchSampler::State::findTables(
+    const patch::Material& material, const FrictionSettings& settings) {
+  if (found_mu_max != settings.mu_max || found_directions != settings.directions) {
+    found.clear();
+    found_mu_max = settings.mu_max;
+    found_directions = settings.directions;
+  }
+  for (const FoundTables& f : found)
+    if (f.map == material.map && f.mask == material.mask) return f.tables;
+  const patch::CoefficientTables* t =
+      tables.find(material.map, material.mask, settings.mu_max, settings.directions);
+  // Only tables found are kept: a missing entry may be built before a later call.
+  if (t != nullptr && found.size() < 16) found.push_back({material.map, material.mask, t});
+  return t;
+}
 
 void CpuPatchSampler::State::reserveLike(const State& other) {
   // Every buffer at least as large as other's, and other's directions when this state has
@@ -307,15 +335,14 @@ bool CpuPatchSampler::State::planarFace(const patch::Volume& volume, const patch
   // One flat face covers the pixel centres; any other face must cover none (so the raster
   // path's nearest-fragment choice never arises).
   out = {};
+  const bool several = r.planars.size() > 1;
   for (const patch::Planar& prim : r.planars) {
-    patch::noteDepthDecisions(volume, prim, r.depth);
-    if (r.planars.size() > 1 && patch::coversNoCentre(volume, prim)) continue;
+    if (patch::noteDepthDecisions(volume, prim, r.depth, several) && several) continue;
     if (out.face != nullptr || !patch::isFlatFace(prim)) return false;
     out.face = &prim;
   }
   if (out.face == nullptr || out.face->material.map == nullptr) return true;
-  out.tables = tables.find(out.face->material.map, out.face->material.mask, settings.mu_max,
-                           settings.directions);
+  out.tables = findTables(out.face->material, settings);
   return out.tables != nullptr;  // a texture over the tables' budget is rasterised
 }
 

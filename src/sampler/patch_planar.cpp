@@ -566,14 +566,17 @@ bool coversNoCentre(const Volume& volume, const Planar& prim) {
   return centresIn(volume, poly, faces) == 0;
 }
 
-void noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& depth) {
+bool noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& depth,
+                        bool coverage) {
   Polygon poly = patchSquare(volume);
-  HalfPlanes edges = halfPlanesOf(volume, prim);
+  HalfPlanes planes = halfPlanesOf(volume, prim);
+  HalfPlanes edges = planes;
   edges.count -= 2;  // the edges alone: the depth clip is what is being decided
   clipBy(poly, edges);
-  if (poly.count < 3) return;
+  if (poly.count < 3) return true;
   // A face seen edge-on has no pixels to decide (coversNoCentre's slivers).
-  if (areaOf(poly) < kSliverPixels * volume.pixel * volume.pixel) return;
+  const double sliver = kSliverPixels * volume.pixel * volume.pixel;
+  if (areaOf(poly) < sliver) return true;
   const double h = volume.half_depth;
   double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;
   for (int k = 0; k < poly.count; ++k) {
@@ -589,6 +592,19 @@ void noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& 
     depth.noteRange(zmin, zmax, h);
   else
     depth.forget();
+  if (!coverage) return false;
+  // Whether it covers no pixel centre (coversNoCentre), from the same clipped polygon.
+  if (beyond) return true;
+  if (!inside) {
+    HalfPlanes clip;
+    clip.plane[0] = planes.plane[static_cast<size_t>(planes.count - 2)];
+    clip.plane[1] = planes.plane[static_cast<size_t>(planes.count - 1)];
+    clip.count = 2;
+    clipBy(poly, clip);
+    if (poly.count < 3 || areaOf(poly) < sliver) return true;
+  }
+  const Planar* faces[] = {&prim};
+  return centresIn(volume, poly, faces) == 0;
 }
 
 Footprint footprintOf(const Volume& volume, const Planar& a, const Planar& b) {

@@ -162,7 +162,9 @@ bool coversNoCentre(const Volume& volume, const Planar& prim);
 
 // Notes in `depth` the depth clip's decisions on the face's pixels within the patch square
 // (what the raster path notes; patch_reuse.hpp keeps a sample while they hold).
-void noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& depth);
+// With `coverage`, returns coversNoCentre(volume, prim) from the same clipping (else false).
+bool noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& depth,
+                        bool coverage = false);
 
 // The footprint of two faces; pixels counted with the edge tests' top-left rule.
 Footprint footprintOf(const Volume& volume, const Planar& a, const Planar& b);
