@@ -394,26 +394,52 @@ double CoefficientTables::accumulate(std::span<const Vec2> polygon, std::span<co
   for (size_t k = 1; k < vertices; ++k)
     xmin = std::min(xmin, polygon[k].x()), ymin = std::min(ymin, polygon[k].y());
   const Vec2 shift(cols_ * std::floor(xmin * inv_cols_), rows_ * std::floor(ymin / rows_));
-  double ymax = -std::numeric_limits<double>::infinity(), area = 0.0;
-  std::array<double, 32> ys;
-  // The polygon's sloped edges as x = x0 + (y - y0) slope over [y0, y1]: a strip's middle lies
-  // strictly between vertices, where exactly two of them cross it (no division per strip).
-  struct Sloped {
-    double y0, y1, x0, slope;
-  };
-  std::array<Sloped, 32> edges;
-  size_t sloped = 0;
-  for (size_t k = 0; k < vertices; ++k) {
-    Vec2 p = polygon[k] - shift, q = polygon[(k + 1) % vertices] - shift;
-    area += p.x() * q.y() - q.x() * p.y();
-    ys[k] = p.y();
-    ymax = std::max(ymax, p.y());
-    if (p.y() == q.y()) continue;
-    if (p.y() > q.y()) std::swap(p, q);
-    edges[sloped++] = {p.y(), q.y(), p.x(), (q.x() - p.x()) / (q.y() - p.y())};
+  // The polygon (convex, either orientation) as two chains from its lowest vertex to its
+  // highest, walked upwards: a strip's middle lies strictly between vertices, where each chain
+  // has one sloped edge there (no search or division per strip).
+  const auto n = static_cast<int>(vertices);
+  std::array<Vec2, 32> v;
+  double area = 0.0;
+  int bottom = 0, top = 0;
+  for (int k = 0; k < n; ++k) {
+    v[static_cast<size_t>(k)] = polygon[static_cast<size_t>(k)] - shift;
+    if (v[static_cast<size_t>(k)].y() < v[static_cast<size_t>(bottom)].y()) bottom = k;
+    if (v[static_cast<size_t>(k)].y() > v[static_cast<size_t>(top)].y()) top = k;
   }
-  std::sort(ys.begin(), ys.begin() + static_cast<long>(vertices));
-  ymin = ys[0];
+  for (int k = 0; k < n; ++k) {
+    const Vec2& p = v[static_cast<size_t>(k)];
+    const Vec2& q = v[static_cast<size_t>(k + 1 == n ? 0 : k + 1)];
+    area += p.x() * q.y() - q.x() * p.y();
+  }
+  ymin = v[static_cast<size_t>(bottom)].y();
+  const double ymax = v[static_cast<size_t>(top)].y();
+  struct Chain {
+    int at, next, dir;
+    double slope;
+    bool set;
+  };
+  auto advance = [&](Chain& c, double y) {
+    // Onto the edge that reaches above y (or the top).
+    bool moved = false;
+    while (c.at != top && v[static_cast<size_t>(c.next)].y() <= y) {
+      c.at = c.next;
+      c.next = c.next + c.dir;
+      c.next = c.next == n ? 0 : (c.next < 0 ? n - 1 : c.next);
+      moved = true;
+    }
+    if (moved || !c.set) {
+      c.set = true;
+      const Vec2& p = v[static_cast<size_t>(c.at)];
+      const Vec2& q = v[static_cast<size_t>(c.next)];
+      c.slope = q.y() > p.y() ? (q.x() - p.x()) / (q.y() - p.y()) : 0.0;
+    }
+  };
+  Chain left{bottom, bottom + 1 == n ? 0 : bottom + 1, 1, 0.0, false};
+  Chain right{bottom, bottom == 0 ? n - 1 : bottom - 1, -1, 0.0, false};
+  auto xAt = [&](const Chain& c, double y) {
+    const Vec2& p = v[static_cast<size_t>(c.at)];
+    return p.x() + (y - p.y()) * c.slope;
+  };
   const auto m = static_cast<size_t>(angles_);
   const size_t line = static_cast<size_t>(cols_ + 1) * m;
   auto endOf = [&](const float* row, double x) {
@@ -458,24 +484,22 @@ double CoefficientTables::accumulate(std::span<const Vec2> polygon, std::span<co
     __builtin_prefetch(p + point + first_byte);
     __builtin_prefetch(p + point + last_byte);
   };
-  size_t next = 0;
   const auto first = static_cast<long long>(std::floor(ymin));
+  int row_index = positiveMod(first, rows_);
   for (long long r = first; static_cast<double>(r) < ymax; ++r) {
-    const float* row = sums_.data() + static_cast<size_t>(positiveMod(r, rows_)) * line;
+    const float* row = sums_.data() + static_cast<size_t>(row_index) * line;
+    row_index = row_index + 1 == rows_ ? 0 : row_index + 1;
     double y0 = std::max(static_cast<double>(r), ymin);
     const double row_end = std::min(static_cast<double>(r + 1), ymax);
     while (y0 < row_end) {
-      while (next < vertices && ys[next] <= y0) ++next;
-      const double y1 = next < vertices ? std::min(ys[next], row_end) : row_end;
+      advance(left, y0);
+      advance(right, y0);
+      const double y1 = std::min({row_end, v[static_cast<size_t>(left.next)].y(),
+                                  v[static_cast<size_t>(right.next)].y()});
+      if (!(y1 > y0)) break;  // at the top
       const double y = 0.5 * (y0 + y1);
-      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-      for (size_t k = 0; k < sloped; ++k) {
-        const Sloped& e = edges[k];
-        if (y < e.y0 || y > e.y1) continue;
-        const double x = e.x0 + (y - e.y0) * e.slope;
-        lo = std::min(lo, x);
-        hi = std::max(hi, x);
-      }
+      double lo = xAt(left, y), hi = xAt(right, y);
+      if (lo > hi) std::swap(lo, hi);
       if (hi > lo) {
         Strip& st = strips[gathered++];
         st = {endOf(row, lo), endOf(row, hi), row + static_cast<size_t>(cols_) * m,
