@@ -146,7 +146,7 @@ std::unique_ptr<World> boxOnPlane(const std::shared_ptr<const NormalMap>& map, d
 TEST(PlanarPath, UniformSlopeBoxOnPlaneMatchesTheRasterPath) {
   // Every pixel has the same coefficient, so the raster mean is exact: the planar path must
   // give it (rounding aside) at any turn of the box against the texture and the frame. The
-  // slope is along x, so each turn keeps every direction more than one table step (11.25
+  // slope is along x, so each turn keeps every direction more than one table step (22.5
   // degrees) from perpendicular to g, where the interpolation between angles is exact.
   const auto map = uniformSlope(32, 0.4f, 0.0f);
   for (const double yaw : {0.0, 0.3, 0.7854, 1.2}) {
