@@ -181,19 +181,32 @@ int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar*
   }
   int j0 = 0, j1 = -1;
   pixelRange(volume, ymin - 1e-6 * volume.pixel, ymax + 1e-6 * volume.pixel, j0, j1);
-  // The sloped edges as x = x0 + (y - y0) slope over [y0, y1] (a convex polygon's horizontal
-  // edges lie at ymin or ymax, where the rows are counted the exact way).
-  struct Sloped {
-    double y0, y1, x0, slope;
-  };
-  std::array<Sloped, 24> edges{};
-  size_t sloped = 0;
-  for (int k = 0; k < poly.count; ++k) {
-    Vec2 p = poly.v[static_cast<size_t>(k)], q = poly.v[static_cast<size_t>((k + 1) % poly.count)];
-    if (p.y() == q.y()) continue;
-    if (p.y() > q.y()) std::swap(p, q);
-    edges[sloped++] = {p.y(), q.y(), p.x(), (q.x() - p.x()) / (q.y() - p.y())};
+  // The polygon as two chains from its lowest vertex to its highest, walked upwards row by
+  // row (a convex polygon's horizontal edges lie at ymin or ymax, where the rows are counted
+  // the exact way).
+  const int n = poly.count;
+  int bottom = 0, top = 0;
+  for (int k = 1; k < n; ++k) {
+    if (poly.v[static_cast<size_t>(k)].y() < poly.v[static_cast<size_t>(bottom)].y()) bottom = k;
+    if (poly.v[static_cast<size_t>(k)].y() > poly.v[static_cast<size_t>(top)].y()) top = k;
   }
+  struct Chain {
+    int at, next, dir;
+  };
+  auto advance = [&](Chain& c, double y) {
+    while (c.at != top && poly.v[static_cast<size_t>(c.next)].y() <= y) {
+      c.at = c.next;
+      c.next = c.next + c.dir;
+      c.next = c.next == n ? 0 : (c.next < 0 ? n - 1 : c.next);
+    }
+  };
+  auto xAt = [&](const Chain& c, double y) {
+    const Vec2& p = poly.v[static_cast<size_t>(c.at)];
+    const Vec2& q = poly.v[static_cast<size_t>(c.next)];
+    return q.y() > p.y() ? p.x() + (y - p.y()) * (q.x() - p.x()) / (q.y() - p.y()) : p.x();
+  };
+  Chain left{bottom, bottom + 1 == n ? 0 : bottom + 1, 1};
+  Chain right{bottom, bottom == 0 ? n - 1 : bottom - 1, -1};
   const double inv = 1.0 / volume.pixel, x0 = volume.centreX(0);
   const double tie = 1e-6 * volume.pixel;
   auto kept = [&](int i, double y) {
@@ -209,14 +222,10 @@ int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar*
       pixels += centresInRow(volume, poly, j, faces);
       continue;
     }
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (size_t k = 0; k < sloped; ++k) {
-      const Sloped& e = edges[k];
-      if (y < e.y0 || y > e.y1) continue;
-      const double x = e.x0 + (y - e.y0) * e.slope;
-      lo = std::min(lo, x), hi = std::max(hi, x);
-    }
-    if (lo > hi) continue;
+    advance(left, y);
+    advance(right, y);
+    double lo = xAt(left, y), hi = xAt(right, y);
+    if (lo > hi) std::swap(lo, hi);
     // Centres within `tie` of an end take the faces' exact tests (top-left rule); the others
     // are inside or outside beyond rounding.
     const double a = (lo - x0) * inv, b = (hi - x0) * inv;
