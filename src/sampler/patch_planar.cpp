@@ -20,9 +20,9 @@ constexpr int kSamplesPerTexel = 4;
 // Cells per texel preferred where the tables stay within kFineBytes: a boundary cell then
 // counts a quarter of a texel with its mean instead of a whole one. At 1, a cell straddling a
 // sawtooth's steep face put crawling_worm's contacts (a 64 x 64 map) up to 58 % from the
-// raster path (9 % at 2). Larger maps take one cell per texel: their tables (8 MB for
-// 256 x 256 at 32 angles, 4 MB at 16) then stay within the caches' reach; each contact reads half the
-// rows (stacking, oak_stacks, the bench's 256 x 256 maps agree as closely at 1).
+// raster path (9 % at 2). Larger maps (128 x 128 and up at 16 angles) take one cell per texel:
+// their tables (4 MB for 256 x 256) then stay within the caches' reach and each contact reads
+// half the rows; stacking, oak_stacks and boxes_on_materials agree as closely at 1.
 constexpr int kPreferredSub = 2;
 constexpr size_t kFineBytes = size_t{4} << 20;
 // Tabulated angles at least this many (a multiple of N): an angle step of 22.5 degrees. The

@@ -6,13 +6,11 @@
 // map is blended bilinearly (unnormalised, as patch_texture.hpp does), turned into a ploughing
 // vector g (fragment_model.hpp) and, through the gain mask, into max(0, g . e) for a direction e
 // in the map's tangent plane. Averaging the texels' own coefficients is a different number
-// (the ploughing term is not linear in the normal). The tables hold a summed-area table (in
-// double) of the cells' means (a cell is 1 / sub of a texel, between texel centres, so its
-// normals are one bilinear patch), at `angles` directions e evenly spaced in the tangent plane.
-// A footprint aligned with the texture's axes (boxes stacked square on each other) is then four
-// corner reads per angle; any other convex footprint is a sum over the cell rows it crosses of
-// one span each (two lines of the table per end), so its cost is its height in cells, not
-// R x R pixels.
+// (the ploughing term is not linear in the normal). The tables hold running sums (float) along
+// each row of cells of the cells' means (a cell is 1 / sub of a texel, between texel centres, so
+// its normals are one bilinear patch), at `angles` directions e evenly spaced in the tangent
+// plane. A convex footprint is then a sum over the cell rows it crosses of one span each (two
+// adjacent points of the row per end), so its cost is its height in cells, not R x R pixels.
 //
 // Approximations, each bounded in docs/samplers.md: (1) the footprint's mean of the field, not
 // its mean at the pixel centres (the raster path's own sampling noise); (2) cells cut by the
