@@ -97,11 +97,12 @@ HalfPlanes halfPlanesOf(const Volume& volume, const Planar& prim) {
 
 // The same test the raster path makes at a pixel centre: the face's edges (top-left rule) and
 // the depth clip.
-bool keepsCentre(const Volume& volume, const Planar& prim, double x, double y) {
+bool keepsCentre(const Volume& volume, const Planar& prim, double x, double y,
+                 bool depth = true) {
   for (int k = 0; k < prim.edge_count; ++k) {
     if (!prim.edges[static_cast<size_t>(k)].inside(x, y)) return false;
   }
-  return std::abs(prim.z.at(x, y)) <= volume.half_depth;
+  return !depth || std::abs(prim.z.at(x, y)) <= volume.half_depth;
 }
 
 struct Polygon {
@@ -152,7 +153,7 @@ double areaOf(const Polygon& poly) {
 
 // Pixel centres of row j inside `poly` and kept by every listed face, counted.
 int centresInRow(const Volume& volume, const Polygon& poly, int j,
-                 std::span<const Planar* const> faces) {
+                 std::span<const Planar* const> faces, bool depth) {
   const double y = volume.centreX(j);
   double lo = 0.0, hi = 0.0;
   spanAt(std::span<const Vec2>(poly.v.data(), static_cast<size_t>(poly.count)), y, lo, hi);
@@ -164,7 +165,7 @@ int centresInRow(const Volume& volume, const Polygon& poly, int j,
   i0 = std::max(i0, 0), i1 = std::min(i1, volume.resolution - 1);
   auto kept = [&](int i) {
     for (const Planar* f : faces)
-      if (!keepsCentre(volume, *f, volume.centreX(i), y)) return false;
+      if (!keepsCentre(volume, *f, volume.centreX(i), y, depth)) return false;
     return true;
   };
   while (i0 <= i1 && !kept(i0)) ++i0;
@@ -172,7 +173,9 @@ int centresInRow(const Volume& volume, const Polygon& poly, int j,
   return i1 - i0 + 1;
 }
 
-int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar* const> faces) {
+// Without `depth`, the faces' edge tests alone.
+int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar* const> faces,
+              bool depth = true) {
   if (poly.count < 3) return 0;
   double ymin = poly.v[0].y(), ymax = ymin;
   for (int k = 1; k < poly.count; ++k) {
@@ -211,7 +214,7 @@ int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar*
   const double tie = 1e-6 * volume.pixel;
   auto kept = [&](int i, double y) {
     for (const Planar* f : faces)
-      if (!keepsCentre(volume, *f, volume.centreX(i), y)) return false;
+      if (!keepsCentre(volume, *f, volume.centreX(i), y, depth)) return false;
     return true;
   };
   int pixels = 0;
@@ -219,7 +222,7 @@ int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar*
     const double y = volume.centreX(j);
     if (y < ymin - tie || y > ymax + tie) continue;
     if (y - ymin <= tie || ymax - y <= tie) {
-      pixels += centresInRow(volume, poly, j, faces);
+      pixels += centresInRow(volume, poly, j, faces, depth);
       continue;
     }
     advance(left, y);
@@ -624,10 +627,15 @@ bool noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& 
   // pixel's margin (z is affine). Cut by the clip: pixels lie on its line, nothing is known.
   const bool inside = zmin >= -h && zmax <= h;
   const bool beyond = zmin > h || zmax < -h;
-  if (inside || beyond)
+  const Planar* faces[] = {&prim};
+  if (inside || beyond) {
     depth.noteRange(zmin, zmax, h);
-  else
+  } else {
+    // Cut by the clip. A secondary face with no pixel centre within its edges has no pixel
+    // for the raster path to decide either (a tilted box's side seen nearly edge-on).
+    if (coverage && centresIn(volume, poly, faces, false) == 0) return true;
     depth.forget();
+  }
   if (!coverage) return false;
   // Whether it covers no pixel centre (coversNoCentre), from the same clipped polygon.
   if (beyond) return true;
@@ -639,7 +647,6 @@ bool noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& 
     clipBy(poly, clip);
     if (poly.count < 3 || areaOf(poly) < sliver) return true;
   }
-  const Planar* faces[] = {&prim};
   return centresIn(volume, poly, faces) == 0;
 }
 
