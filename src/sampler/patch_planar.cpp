@@ -613,9 +613,15 @@ bool noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& 
   edges.count -= 2;  // the edges alone: the depth clip is what is being decided
   clipBy(poly, edges);
   if (poly.count < 3) return true;
-  // A face seen edge-on has no pixels to decide (coversNoCentre's slivers).
+  // A face seen edge-on (coversNoCentre's slivers), or cut by the clip with no pixel centre
+  // within its edges (below), covers nothing while the clip moves in by less than the raster
+  // path's margin for faces seen edge-on (noteEdgeOn in patch_raster.cpp: 0.005 w).
+  const double edge_on = 0.005 * volume.width;
   const double sliver = kSliverPixels * volume.pixel * volume.pixel;
-  if (areaOf(poly) < sliver) return true;
+  if (areaOf(poly) < sliver) {
+    depth.limitOutside(edge_on);
+    return true;
+  }
   const double h = volume.half_depth;
   double zmin = std::numeric_limits<double>::infinity(), zmax = -zmin;
   for (int k = 0; k < poly.count; ++k) {
@@ -631,9 +637,12 @@ bool noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& 
   if (inside || beyond) {
     depth.noteRange(zmin, zmax, h);
   } else {
-    // Cut by the clip. A secondary face with no pixel centre within its edges has no pixel
-    // for the raster path to decide either (a tilted box's side seen nearly edge-on).
-    if (coverage && centresIn(volume, poly, faces, false) == 0) return true;
+    // Cut by the clip: a secondary face with no pixel centre within its edges (a tilted
+    // box's side seen nearly edge-on) has none within the clip however it moves.
+    if (coverage && centresIn(volume, poly, faces, false) == 0) {
+      depth.limitOutside(edge_on);
+      return true;
+    }
     depth.forget();
   }
   if (!coverage) return false;
