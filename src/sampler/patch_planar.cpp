@@ -195,21 +195,30 @@ int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar*
   }
   struct Chain {
     int at, next, dir;
+    double slope;
+    bool set;
   };
   auto advance = [&](Chain& c, double y) {
+    bool moved = false;
     while (c.at != top && poly.v[static_cast<size_t>(c.next)].y() <= y) {
       c.at = c.next;
       c.next = c.next + c.dir;
       c.next = c.next == n ? 0 : (c.next < 0 ? n - 1 : c.next);
+      moved = true;
+    }
+    if (moved || !c.set) {
+      c.set = true;
+      const Vec2& p = poly.v[static_cast<size_t>(c.at)];
+      const Vec2& q = poly.v[static_cast<size_t>(c.next)];
+      c.slope = q.y() > p.y() ? (q.x() - p.x()) / (q.y() - p.y()) : 0.0;
     }
   };
   auto xAt = [&](const Chain& c, double y) {
     const Vec2& p = poly.v[static_cast<size_t>(c.at)];
-    const Vec2& q = poly.v[static_cast<size_t>(c.next)];
-    return q.y() > p.y() ? p.x() + (y - p.y()) * (q.x() - p.x()) / (q.y() - p.y()) : p.x();
+    return p.x() + (y - p.y()) * c.slope;
   };
-  Chain left{bottom, bottom + 1 == n ? 0 : bottom + 1, 1};
-  Chain right{bottom, bottom == 0 ? n - 1 : bottom - 1, -1};
+  Chain left{bottom, bottom + 1 == n ? 0 : bottom + 1, 1, 0.0, false};
+  Chain right{bottom, bottom == 0 ? n - 1 : bottom - 1, -1, 0.0, false};
   const double inv = 1.0 / volume.pixel, x0 = volume.centreX(0);
   const double tie = 1e-6 * volume.pixel;
   auto kept = [&](int i, double y) {
