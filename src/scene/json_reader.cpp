@@ -277,7 +277,9 @@ int JsonReader::integer(const std::string& key, int fallback, int min, int max) 
 uint64_t JsonReader::unsignedInteger(const std::string& key, uint64_t fallback) {
   const nlohmann::json* v = member(key);
   if (v == nullptr) return fallback;
-  if (!v->is_number_unsigned())
+  // A non-negative signed integer is one too (JSON built in code, rather than parsed, holds 3
+  // as signed).
+  if (!v->is_number_unsigned() && !(v->is_number_integer() && v->get<int64_t>() >= 0))
     failAt(key, "must be a non-negative integer, got " + describeValue(*v));
   return v->get<uint64_t>();
 }

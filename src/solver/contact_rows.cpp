@@ -12,6 +12,19 @@
 
 namespace asperity {
 
+namespace {
+
+// body(first, last) over runs of 64 contacts of [0, n), on the pool when there is one and
+// enough contacts. A run that walks the warm-start cache keeps its own cursor.
+template <class Body>
+void forEachRun(const ThreadPool* pool, size_t n, const Body& body) {
+  constexpr size_t kRun = 64;
+  forEachOn(n >= ContactSolver::kParallelRows ? pool : nullptr, (n + kRun - 1) / kRun, 1,
+            [&](size_t k) { body(k * kRun, std::min(n, (k + 1) * kRun)); });
+}
+
+}  // namespace
+
 void ContactSolver::prepareContact(const Contact& c, ContactRow& row) const {
   row.a = static_cast<int>(c.body_a);
   row.b = static_cast<int>(c.body_b);
@@ -115,10 +128,7 @@ void ContactSolver::fillRows(std::span<const Contact> contacts, bool rows, bool 
         warmStartRow(*cached, rows_[row], row);
     }
   };
-  constexpr size_t kRun = 64;
-  const size_t n = contacts.size();
-  forEachOn(n >= kParallelRows ? pool_ : nullptr, (n + kRun - 1) / kRun, 1,
-            [&](size_t k) { run(k * kRun, std::min(n, (k + 1) * kRun)); });
+  forEachRun(pool_, contacts.size(), run);
 }
 
 void ContactSolver::scheduleRows(std::span<const Contact> contacts) {
@@ -176,11 +186,9 @@ const ContactSolver::Cached* ContactSolver::findCached(const Contact& c, size_t&
 
 void ContactSolver::previousNormalImpulses(std::span<Contact> contacts) const {
   // In runs, each with its own cursor: findCached's answer does not depend on where it starts.
-  constexpr size_t kRun = 64;
-  const size_t n = contacts.size();
-  forEachOn(n >= kParallelRows ? pool_ : nullptr, (n + kRun - 1) / kRun, 1, [&](size_t k) {
+  forEachRun(pool_, contacts.size(), [&](size_t first, size_t last) {
     size_t cursor = 0;
-    for (size_t i = k * kRun; i < std::min(n, (k + 1) * kRun); ++i) {
+    for (size_t i = first; i < last; ++i) {
       const Cached* hit = findCached(contacts[i], cursor);
       contacts[i].lambda_n = hit != nullptr ? hit->lambda_n : 0.0;
     }

@@ -8,11 +8,6 @@ namespace asperity::texgen {
 
 namespace {
 
-int wrap(int index, int size) {
-  const int m = index % size;
-  return m < 0 ? m + size : m;
-}
-
 // One box-blur pass of radius r over `count` samples spaced `stride` apart, wrapping.
 void blurLine(double* data, int count, size_t stride, int r, std::vector<double>& scratch) {
   scratch.resize(static_cast<size_t>(count));
@@ -22,12 +17,12 @@ void blurLine(double* data, int count, size_t stride, int r, std::vector<double>
   // Running sum over the window [k - r, k + r].
   double sum = 0.0;
   for (int d = -r; d <= r; ++d) {
-    sum += scratch[wrap(d, count)];
+    sum += scratch[wrapTexel(d, count)];
   }
   const double norm = 1.0 / (2 * r + 1);
   for (int k = 0; k < count; ++k) {
     data[static_cast<size_t>(k) * stride] = sum * norm;
-    sum += scratch[wrap(k + r + 1, count)] - scratch[wrap(k - r, count)];
+    sum += scratch[wrapTexel(k + r + 1, count)] - scratch[wrapTexel(k - r, count)];
   }
 }
 
@@ -38,23 +33,13 @@ Field::Field(int w, int h, double fill)
 
 double Field::get(int i, int j, Edge edge) const {
   if (edge == Edge::Wrap) {
-    return at(wrap(i, width), wrap(j, height));
+    return at(wrapTexel(i, width), wrapTexel(j, height));
   }
   return at(std::clamp(i, 0, width - 1), std::clamp(j, 0, height - 1));
 }
 
 double Field::sampleWrapped(double x, double y) const {
-  const double fx = std::floor(x);
-  const double fy = std::floor(y);
-  const double wx = x - fx;
-  const double wy = y - fy;
-  // Reduce the base index first so huge coordinates stay in int range.
-  const int i = wrap(static_cast<int>(std::fmod(fx, static_cast<double>(width))), width);
-  const int j = wrap(static_cast<int>(std::fmod(fy, static_cast<double>(height))), height);
-  const int i1 = wrap(i + 1, width);
-  const int j1 = wrap(j + 1, height);
-  return (1 - wy) * ((1 - wx) * at(i, j) + wx * at(i1, j)) +
-         wy * ((1 - wx) * at(i, j1) + wx * at(i1, j1));
+  return bilinearWrapped(x, y, width, height, [this](int i, int j) { return at(i, j); });
 }
 
 Field whiteNoise(int width, int height, Rng& rng) {

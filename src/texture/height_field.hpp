@@ -2,6 +2,7 @@
 // texel's width), turned into normal maps by central differences.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "asperity/texture/normal_map.hpp"
@@ -11,6 +12,29 @@ namespace asperity::texgen {
 
 // How central differences treat the border: Wrap for tiling textures, Clamp for pictures.
 enum class Edge { Wrap, Clamp };
+
+// An index taken modulo `size` into [0, size).
+inline int wrapTexel(int index, int size) {
+  const int m = index % size;
+  return m < 0 ? m + size : m;
+}
+
+// Bilinear value of a tiling grid at texel coordinates (x, y) (texel centres at integers), in
+// the grid's own scalar type; `at(i, j)` reads texel (i, j). The base index is reduced first so
+// huge coordinates stay in int range.
+template <typename Real, typename At>
+Real bilinearWrapped(Real x, Real y, int width, int height, const At& at) {
+  const Real fx = std::floor(x);
+  const Real fy = std::floor(y);
+  const Real wx = x - fx;
+  const Real wy = y - fy;
+  const int i = wrapTexel(static_cast<int>(std::fmod(fx, static_cast<Real>(width))), width);
+  const int j = wrapTexel(static_cast<int>(std::fmod(fy, static_cast<Real>(height))), height);
+  const int i1 = wrapTexel(i + 1, width);
+  const int j1 = wrapTexel(j + 1, height);
+  return (1 - wy) * ((1 - wx) * at(i, j) + wx * at(i1, j)) +
+         wy * ((1 - wx) * at(i, j1) + wx * at(i1, j1));
+}
 
 // A scalar field over texels; (i, j) as in NormalMap (i along +u, j along +v).
 struct Field {

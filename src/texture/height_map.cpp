@@ -11,16 +11,15 @@
 #include "asperity/error.hpp"
 #include "asperity/texture/png_io.hpp"
 #include "texture/exr_height.hpp"
+#include "texture/height_field.hpp"
 #include "texture/png_codec.hpp"
 
 namespace asperity {
 
 namespace {
 
-int wrapIndex(int index, int size) {
-  const int m = index % size;
-  return m < 0 ? m + size : m;
-}
+using texgen::bilinearWrapped;
+using texgen::wrapTexel;
 
 // The scale a height PNG stores, or 0 when it stores none (or a bad one).
 double storedScale(const std::vector<uint8_t>& bytes) {
@@ -36,9 +35,9 @@ double storedScale(const std::vector<uint8_t>& bytes) {
 
 // Wrapped central differences in metres per metre at texel (i, j).
 void gradient(const HeightMap& map, int i, int j, double du, double dv, double& gu, double& gv) {
-  gu = (map.at(wrapIndex(i + 1, map.width), j) - map.at(wrapIndex(i - 1, map.width), j)) /
+  gu = (map.at(wrapTexel(i + 1, map.width), j) - map.at(wrapTexel(i - 1, map.width), j)) /
        (2.0 * du);
-  gv = (map.at(i, wrapIndex(j + 1, map.height)) - map.at(i, wrapIndex(j - 1, map.height))) /
+  gv = (map.at(i, wrapTexel(j + 1, map.height)) - map.at(i, wrapTexel(j - 1, map.height))) /
        (2.0 * dv);
 }
 
@@ -48,8 +47,8 @@ double autocorrelation(const HeightMap& map, double mean, double variance, int l
   for (int j = 0; j < map.height; ++j) {
     for (int i = 0; i < map.width; ++i) {
       const double h = map.at(i, j) - mean;
-      sum += h * (map.at(wrapIndex(i + lag, map.width), j) - mean);
-      sum += h * (map.at(i, wrapIndex(j + lag, map.height)) - mean);
+      sum += h * (map.at(wrapTexel(i + lag, map.width), j) - mean);
+      sum += h * (map.at(i, wrapTexel(j + lag, map.height)) - mean);
     }
   }
   return sum / (2.0 * static_cast<double>(map.values.size()) * variance);
@@ -77,16 +76,7 @@ float HeightMap::sample(float u, float v) const {
   const float x = u * static_cast<float>(width) - 0.5f;
   const float y = v * static_cast<float>(height) - 0.5f;
   if (!std::isfinite(x) || !std::isfinite(y)) return values[0];
-  const float fx = std::floor(x);
-  const float fy = std::floor(y);
-  const float wx = x - fx;
-  const float wy = y - fy;
-  const int i = wrapIndex(static_cast<int>(std::fmod(fx, static_cast<float>(width))), width);
-  const int j = wrapIndex(static_cast<int>(std::fmod(fy, static_cast<float>(height))), height);
-  const int i1 = wrapIndex(i + 1, width);
-  const int j1 = wrapIndex(j + 1, height);
-  return (1 - wy) * ((1 - wx) * at(i, j) + wx * at(i1, j)) +
-         wy * ((1 - wx) * at(i, j1) + wx * at(i1, j1));
+  return bilinearWrapped(x, y, width, height, [this](int i, int j) { return at(i, j); });
 }
 
 HeightMap loadHeightMapPng(const std::string& path, double height_scale, HeightMapInfo* info) {
@@ -105,8 +95,8 @@ HeightMap loadHeightMapPng(const std::string& path, double height_scale, HeightM
   HeightMap map(header.width, header.height);
   for (int r = 0; r < map.height; ++r)
     for (int i = 0; i < map.width; ++i)
-      map.at(i, map.height - 1 - r) = static_cast<float>(
-          scale * image.samples[static_cast<size_t>(r) * map.width + i]);
+      map.at(i, map.height - 1 - r) =
+          static_cast<float>(scale * image.samples[static_cast<size_t>(r) * map.width + i]);
   if (info) *info = {header.bit_depth == 16 ? 16 : 8, scale, !(height_scale > 0.0)};
   return map;
 }

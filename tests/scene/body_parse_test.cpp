@@ -223,6 +223,17 @@ TEST(BodyParse, BadGeneratorParameters) {
             "got -1");
 }
 
+TEST(BodyParse, ASeedBuiltInCodeReadsAsTheSameSeedParsed) {
+  // nlohmann::json holds 3 written in code as a signed integer and "3" parsed as unsigned.
+  const nlohmann::json parsed = nlohmann::json::parse(R"({"bodies": [{"name": "b", "shapes":
+      [{"type": "sphere", "radius": 0.1, "surface": {"normal_map": {"generator": "gaussian",
+      "seed": 3}}}]}]})");
+  nlohmann::json built = parsed;
+  built["bodies"][0]["shapes"][0]["surface"]["normal_map"]["seed"] = int{3};
+  ASSERT_TRUE(built["bodies"][0]["shapes"][0]["surface"]["normal_map"]["seed"].is_number_integer());
+  EXPECT_EQ(sceneToJson(parseScene(built, "built")), sceneToJson(parseScene(parsed, "parsed")));
+}
+
 TEST(BodyParse, MissingNormalMapFile) {
   EXPECT_EQ(loadError(withShape(R"({"type": "sphere", "radius": 0.1,
                 "surface": {"normal_map": "textures/none.png"}})")),
