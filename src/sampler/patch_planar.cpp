@@ -110,6 +110,63 @@ struct Polygon {
   int count = 0;
 };
 
+// A convex polygon (either orientation) as two chains of edges from its lowest vertex to its
+// highest, walked upwards: at each height each chain is on one edge, so a row's or a strip's
+// span needs no search over the edges and no division per row.
+class Chains {
+ public:
+  Chains(const Vec2* v, int n) : v_(v), n_(n) {
+    for (int k = 1; k < n; ++k) {
+      if (at(k).y() < at(bottom_).y()) bottom_ = k;
+      if (at(k).y() > at(top_).y()) top_ = k;
+    }
+    left_ = {bottom_, bottom_ + 1 == n ? 0 : bottom_ + 1, 1, 0.0, false};
+    right_ = {bottom_, bottom_ == 0 ? n - 1 : bottom_ - 1, -1, 0.0, false};
+  }
+  double ymin() const { return at(bottom_).y(); }
+  double ymax() const { return at(top_).y(); }
+  // Both chains onto the edges that reach above y (or the top); y never decreases.
+  void advance(double y) {
+    advance(left_, y);
+    advance(right_, y);
+  }
+  // Where the first of the two current edges ends: the span is linear in y up to there.
+  double nextVertexY() const { return std::min(at(left_.next).y(), at(right_.next).y()); }
+  // The polygon's x interval at height y, on the current edges.
+  void span(double y, double& lo, double& hi) const {
+    lo = xAt(left_, y), hi = xAt(right_, y);
+    if (lo > hi) std::swap(lo, hi);
+  }
+
+ private:
+  struct Chain {
+    int at, next, dir;
+    double slope;
+    bool set;
+  };
+  const Vec2& at(int k) const { return v_[static_cast<size_t>(k)]; }
+  void advance(Chain& c, double y) const {
+    bool moved = false;
+    while (c.at != top_ && at(c.next).y() <= y) {
+      c.at = c.next;
+      c.next = c.next + c.dir;
+      c.next = c.next == n_ ? 0 : (c.next < 0 ? n_ - 1 : c.next);
+      moved = true;
+    }
+    if (moved || !c.set) {
+      c.set = true;
+      const Vec2& p = at(c.at);
+      const Vec2& q = at(c.next);
+      c.slope = q.y() > p.y() ? (q.x() - p.x()) / (q.y() - p.y()) : 0.0;
+    }
+  }
+  double xAt(const Chain& c, double y) const { return at(c.at).x() + (y - at(c.at).y()) * c.slope; }
+
+  const Vec2* v_;
+  int n_, bottom_ = 0, top_ = 0;
+  Chain left_{}, right_{};
+};
+
 Polygon patchSquare(const Volume& volume) {
   const double h = 0.5 * volume.width;
   Polygon p;
@@ -177,48 +234,12 @@ int centresInRow(const Volume& volume, const Polygon& poly, int j,
 int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar* const> faces,
               bool depth = true) {
   if (poly.count < 3) return 0;
-  double ymin = poly.v[0].y(), ymax = ymin;
-  for (int k = 1; k < poly.count; ++k) {
-    ymin = std::min(ymin, poly.v[static_cast<size_t>(k)].y());
-    ymax = std::max(ymax, poly.v[static_cast<size_t>(k)].y());
-  }
+  // Walked upwards row by row (a convex polygon's horizontal edges lie at ymin or ymax, where
+  // the rows are counted the exact way).
+  Chains chains(poly.v.data(), poly.count);
+  const double ymin = chains.ymin(), ymax = chains.ymax();
   int j0 = 0, j1 = -1;
   pixelRange(volume, ymin - 1e-6 * volume.pixel, ymax + 1e-6 * volume.pixel, j0, j1);
-  // The polygon as two chains from its lowest vertex to its highest, walked upwards row by
-  // row (a convex polygon's horizontal edges lie at ymin or ymax, where the rows are counted
-  // the exact way).
-  const int n = poly.count;
-  int bottom = 0, top = 0;
-  for (int k = 1; k < n; ++k) {
-    if (poly.v[static_cast<size_t>(k)].y() < poly.v[static_cast<size_t>(bottom)].y()) bottom = k;
-    if (poly.v[static_cast<size_t>(k)].y() > poly.v[static_cast<size_t>(top)].y()) top = k;
-  }
-  struct Chain {
-    int at, next, dir;
-    double slope;
-    bool set;
-  };
-  auto advance = [&](Chain& c, double y) {
-    bool moved = false;
-    while (c.at != top && poly.v[static_cast<size_t>(c.next)].y() <= y) {
-      c.at = c.next;
-      c.next = c.next + c.dir;
-      c.next = c.next == n ? 0 : (c.next < 0 ? n - 1 : c.next);
-      moved = true;
-    }
-    if (moved || !c.set) {
-      c.set = true;
-      const Vec2& p = poly.v[static_cast<size_t>(c.at)];
-      const Vec2& q = poly.v[static_cast<size_t>(c.next)];
-      c.slope = q.y() > p.y() ? (q.x() - p.x()) / (q.y() - p.y()) : 0.0;
-    }
-  };
-  auto xAt = [&](const Chain& c, double y) {
-    const Vec2& p = poly.v[static_cast<size_t>(c.at)];
-    return p.x() + (y - p.y()) * c.slope;
-  };
-  Chain left{bottom, bottom + 1 == n ? 0 : bottom + 1, 1, 0.0, false};
-  Chain right{bottom, bottom == 0 ? n - 1 : bottom - 1, -1, 0.0, false};
   const double inv = 1.0 / volume.pixel, x0 = volume.centreX(0);
   const double tie = 1e-6 * volume.pixel;
   auto kept = [&](int i, double y) {
@@ -234,10 +255,9 @@ int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar*
       pixels += centresInRow(volume, poly, j, faces, depth);
       continue;
     }
-    advance(left, y);
-    advance(right, y);
-    double lo = xAt(left, y), hi = xAt(right, y);
-    if (lo > hi) std::swap(lo, hi);
+    chains.advance(y);
+    double lo = 0.0, hi = 0.0;
+    chains.span(y, lo, hi);
     // Centres within `tie` of an end take the faces' exact tests (top-left rule); the others
     // are inside or outside beyond rounding.
     const double a = (lo - x0) * inv, b = (hi - x0) * inv;
@@ -418,52 +438,19 @@ double CoefficientTables::accumulate(std::span<const Vec2> polygon, std::span<co
   for (size_t k = 1; k < vertices; ++k)
     xmin = std::min(xmin, polygon[k].x()), ymin = std::min(ymin, polygon[k].y());
   const Vec2 shift(cols_ * std::floor(xmin * inv_cols_), rows_ * std::floor(ymin / rows_));
-  // The polygon (convex, either orientation) as two chains from its lowest vertex to its
-  // highest, walked upwards: a strip's middle lies strictly between vertices, where each chain
-  // has one sloped edge there (no search or division per strip).
+  // A strip's middle lies strictly between vertices, on one edge of each chain.
   const auto n = static_cast<int>(vertices);
   std::array<Vec2, 32> v;
   double area = 0.0;
-  int bottom = 0, top = 0;
-  for (int k = 0; k < n; ++k) {
-    v[static_cast<size_t>(k)] = polygon[static_cast<size_t>(k)] - shift;
-    if (v[static_cast<size_t>(k)].y() < v[static_cast<size_t>(bottom)].y()) bottom = k;
-    if (v[static_cast<size_t>(k)].y() > v[static_cast<size_t>(top)].y()) top = k;
-  }
+  for (int k = 0; k < n; ++k) v[static_cast<size_t>(k)] = polygon[static_cast<size_t>(k)] - shift;
   for (int k = 0; k < n; ++k) {
     const Vec2& p = v[static_cast<size_t>(k)];
     const Vec2& q = v[static_cast<size_t>(k + 1 == n ? 0 : k + 1)];
     area += p.x() * q.y() - q.x() * p.y();
   }
-  ymin = v[static_cast<size_t>(bottom)].y();
-  const double ymax = v[static_cast<size_t>(top)].y();
-  struct Chain {
-    int at, next, dir;
-    double slope;
-    bool set;
-  };
-  auto advance = [&](Chain& c, double y) {
-    // Onto the edge that reaches above y (or the top).
-    bool moved = false;
-    while (c.at != top && v[static_cast<size_t>(c.next)].y() <= y) {
-      c.at = c.next;
-      c.next = c.next + c.dir;
-      c.next = c.next == n ? 0 : (c.next < 0 ? n - 1 : c.next);
-      moved = true;
-    }
-    if (moved || !c.set) {
-      c.set = true;
-      const Vec2& p = v[static_cast<size_t>(c.at)];
-      const Vec2& q = v[static_cast<size_t>(c.next)];
-      c.slope = q.y() > p.y() ? (q.x() - p.x()) / (q.y() - p.y()) : 0.0;
-    }
-  };
-  Chain left{bottom, bottom + 1 == n ? 0 : bottom + 1, 1, 0.0, false};
-  Chain right{bottom, bottom == 0 ? n - 1 : bottom - 1, -1, 0.0, false};
-  auto xAt = [&](const Chain& c, double y) {
-    const Vec2& p = v[static_cast<size_t>(c.at)];
-    return p.x() + (y - p.y()) * c.slope;
-  };
+  Chains chains(v.data(), n);
+  ymin = chains.ymin();
+  const double ymax = chains.ymax();
   const auto m = static_cast<size_t>(angles_);
   const size_t line = static_cast<size_t>(cols_ + 1) * m;
   auto endOf = [&](const float* row, double x) {
@@ -516,14 +503,11 @@ double CoefficientTables::accumulate(std::span<const Vec2> polygon, std::span<co
     double y0 = std::max(static_cast<double>(r), ymin);
     const double row_end = std::min(static_cast<double>(r + 1), ymax);
     while (y0 < row_end) {
-      advance(left, y0);
-      advance(right, y0);
-      const double y1 = std::min({row_end, v[static_cast<size_t>(left.next)].y(),
-                                  v[static_cast<size_t>(right.next)].y()});
+      chains.advance(y0);
+      const double y1 = std::min(row_end, chains.nextVertexY());
       if (!(y1 > y0)) break;  // at the top
-      const double y = 0.5 * (y0 + y1);
-      double lo = xAt(left, y), hi = xAt(right, y);
-      if (lo > hi) std::swap(lo, hi);
+      double lo = 0.0, hi = 0.0;
+      chains.span(0.5 * (y0 + y1), lo, hi);
       if (hi > lo) {
         Strip& st = strips[gathered++];
         st = {endOf(row, lo), endOf(row, hi), row + static_cast<size_t>(cols_) * m,
