@@ -82,7 +82,9 @@ struct CpuPatchSampler::State {
         simd(opt.simd),
         planar(opt.path == PatchPath::Planar),
         area(opt.contact_area),
-        heights(height_cache) {}
+        heights(height_cache) {
+    found.reserve(kFoundTables);  // a step allocates nothing, whichever thread meets a texture
+  }
   patch::MeshCache& meshes;         // the sampler's, shared by every thread's state
   const patch::TableCache& tables;  // the sampler's; built before the contacts are sampled
   SimdCopy simd;                    // the sampler's option, for every loop this state runs
@@ -129,7 +131,8 @@ struct CpuPatchSampler::State {
     const GainMask* mask;
     const patch::CoefficientTables* tables;
   };
-  std::vector<FoundTables> found;
+  static constexpr size_t kFoundTables = 16;
+  std::vector<FoundTables> found;  // at most kFoundTables
   float found_mu_max = -1.0f;
   int found_directions = 0;
 };
@@ -146,7 +149,7 @@ const patch::CoefficientTables* CpuPatchSampler::State::findTables(
   const patch::CoefficientTables* t =
       tables.find(material.map, material.mask, settings.mu_max, settings.directions);
   // Only tables found are kept: a missing entry may be built before a later call.
-  if (t != nullptr && found.size() < 16) found.push_back({material.map, material.mask, t});
+  if (t != nullptr && found.size() < kFoundTables) found.push_back({material.map, material.mask, t});
   return t;
 }
 
