@@ -27,10 +27,7 @@ HALF = (0.5, 0.5, 0.05)  # the slab
 # A sawtooth of period 8 texels in a 256 map: 7.8 mm. The patch spans exactly five periods at
 # 40 x 40 pixels, so its mean hardly depends on where along the teeth a contact falls.
 PERIOD_M = REPEAT * 8 / 256
-# The raster path for every slab: the box would otherwise be read from the planar tables, the
-# meshes rasterised, and the two paths differ by their own sampling (docs/samplers.md); this
-# file checks the assets, not the paths.
-SETTINGS = {"friction_provider": "cpu_raster", "mu0": 0.1, "dt": 0.005, "frame_mode": "world",
+SETTINGS = {"friction_provider": "cpu", "mu0": 0.1, "dt": 0.005, "frame_mode": "world",
             "patch_width": 5 * PERIOD_M, "patch_resolution": 40}
 
 

@@ -80,7 +80,7 @@ struct CpuPatchSampler::State {
       : meshes(shared),
         tables(shared_tables),
         simd(opt.simd),
-        planar(opt.path == PatchPath::Planar),
+        planar(opt.path == PatchPath::Planar && !opt.contact_area.anyContactArea()),
         area(opt.contact_area),
         heights(height_cache) {
     found.reserve(kFoundTables);  // a step allocates nothing, whichever thread meets a texture
@@ -88,7 +88,8 @@ struct CpuPatchSampler::State {
   patch::MeshCache& meshes;         // the sampler's, shared by every thread's state
   const patch::TableCache& tables;  // the sampler's; built before the contacts are sampled
   SimdCopy simd;                    // the sampler's option, for every loop this state runs
-  // Flat patches through the tables (patch_planar.hpp), for contacts under the paper's model.
+  // Flat patches through the tables (patch_planar.hpp); only when no contact may use the
+  // contact-area model (it needs each pixel).
   bool planar;
   const ContactAreaOptions& area;     // the sampler's option
   const patch::HeightCache& heights;  // the sampler's, shared (read only while sampling)
@@ -149,7 +150,8 @@ const patch::CoefficientTables* CpuPatchSampler::State::findTables(
   const patch::CoefficientTables* t =
       tables.find(material.map, material.mask, settings.mu_max, settings.directions);
   // Only tables found are kept: a missing entry may be built before a later call.
-  if (t != nullptr && found.size() < kFoundTables) found.push_back({material.map, material.mask, t});
+  if (t != nullptr && found.size() < kFoundTables)
+    found.push_back({material.map, material.mask, t});
   return t;
 }
 
@@ -262,10 +264,7 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   const patch::ShapeRange ranges[2] = {patch::shapesOf(bodies, contact, Side::A),
                                        patch::shapesOf(bodies, contact, Side::B)};
   std::array<patch::DepthMargins, 2> margins;
-  // The contact-area model reads every pixel in contact: its contacts are rasterised.
-  const bool area_model = modelOf(area, bodies, contact) == FrictionModel::ContactArea;
-  if (planar && images == nullptr && !area_model &&
-      samplePlanar(volume, ranges, contact, settings, margins)) {
+  if (planar && images == nullptr && samplePlanar(volume, ranges, contact, settings, margins)) {
     ++planar_count;
     patch_ms += msBetween(t0, Clock::now());
     return margins;
@@ -274,6 +273,7 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   rasterise(volume, ranges, images != nullptr);
   const size_t count = in_patch.size();
   // The contact-area model shades only the pixels in contact (finishWithArea).
+  const bool area_model = modelOf(area, bodies, contact) == FrictionModel::ContactArea;
   for (size_t s = 0; s < 2 && count > 0 && !area_model; ++s) {
     patch::shadePloughing(volume, raster[s], in_patch, settings.mu_max, gx.data() + s * count,
                           gy.data() + s * count);

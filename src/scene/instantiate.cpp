@@ -233,12 +233,11 @@ std::unique_ptr<FrictionProvider> contactAreaProvider(const SceneDesc& scene) {
     }
   }
   withContext(scene, pointer, [&] {
-    if (scene.friction_provider != "cpu" && scene.friction_provider != "cpu_raster")
-      throw Error("contact_area needs friction_provider \"cpu\" or \"cpu_raster\", got \"" +
-                  scene.friction_provider + "\"");
+    if (scene.friction_provider != "cpu")
+      throw Error("contact_area needs friction_provider \"cpu\", got \"" + scene.friction_provider +
+                  "\"");
   });
   CpuSamplerOptions options;
-  if (scene.friction_provider == "cpu_raster") options.path = PatchPath::Raster;
   ContactAreaOptions& area = options.contact_area;
   area.model = scene.friction_model;
   area.dt = scene.settings.dt / scene.settings.substeps;  // the impulse the solver keeps

@@ -84,9 +84,9 @@ Sweep::Sweep(SweepDesc desc) : desc_(std::move(desc)) {
   const SceneDesc scene = parseScene(*scene_, desc_.scene_file);
   // Pool threads have no OpenGL context: only the core's samplers run in a sweep.
   if (scene.friction_provider != "constant" && scene.friction_provider != "cone" &&
-      scene.friction_provider != "cpu" && scene.friction_provider != "cpu_raster")
+      scene.friction_provider != "cpu")
     throw Error(desc_.scene_file + ": sampler \"" + scene.friction_provider +
-                "\" cannot run in a sweep (available: constant, cone, cpu, cpu_raster)");
+                "\" cannot run in a sweep (available: constant, cone, cpu)");
   for (const BodyDesc& b : scene.bodies) body_names_.push_back(b.name);
   for (const std::string& m : desc_.measures) measures_.push_back(resolveMeasure(m, body_names_));
   steps_ = stepsFor(desc_.seconds, scene.settings.dt, "seconds");

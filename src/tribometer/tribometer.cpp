@@ -47,10 +47,9 @@ void validateTribometerSettings(const TribometerSettings& s) {
   if (s.threads < 0 || s.threads > kMaxThreads)
     throw Error("tribometer: threads must be in [0, " + std::to_string(kMaxThreads) + "], got " +
                 std::to_string(s.threads));
-  if (s.sampler != "cpu" && s.sampler != "cpu_raster" && s.sampler != "cone" &&
-      s.sampler != "constant")
+  if (s.sampler != "cpu" && s.sampler != "cone" && s.sampler != "constant")
     throw Error("tribometer: sampler \"" + s.sampler +
-                "\" cannot run in the tribometer (available: constant, cone, cpu, cpu_raster)");
+                "\" cannot run in the tribometer (available: constant, cone, cpu)");
 }
 
 TribometerResult runTribometer(const TribometerSurfaces& surfaces,

@@ -7,15 +7,8 @@
 namespace asperity::sampler_test {
 namespace {
 
-// The suite's pixel-exact oracles (pixel centres on texel centres, one mesh edge against a
-// plane) pin the raster path, the reference; the planar path, which averages the texture's
-// field over the footprint instead, has its own oracles in patch_planar_test.cpp.
 struct CpuTraits {
-  static std::unique_ptr<FrictionProvider> make() {
-    CpuSamplerOptions options;
-    options.path = PatchPath::Raster;
-    return std::make_unique<CpuPatchSampler>(options);
-  }
+  static std::unique_ptr<FrictionProvider> make() { return std::make_unique<CpuPatchSampler>(); }
   static double tolerance() { return 1e-5; }
   static double tessellationTolerance() { return 1e-5; }
   static bool multipleOf4Only() { return false; }

@@ -150,7 +150,7 @@ TEST(PlanarPath, UniformSlopeBoxOnPlaneMatchesTheRasterPath) {
   // degrees) from perpendicular to g, where the interpolation between angles is exact.
   const auto map = uniformSlope(32, 0.4f, 0.0f);
   for (const double yaw : {0.0, 0.3, 0.7854, 1.2}) {
-    auto planar = boxOnPlane(map, yaw, "cpu"), raster = boxOnPlane(map, yaw, "cpu_raster");
+    auto planar = boxOnPlane(map, yaw, "cpu_planar"), raster = boxOnPlane(map, yaw, "cpu");
     planar->step();
     raster->step();
     const auto& a = planar->contacts();
@@ -278,7 +278,7 @@ TEST(PlanarPath, SameBitsOnOneAndTwoThreads) {
   // The tables are built on the pool (a row per item) and the contacts sampled on it.
   auto run = [](int threads) {
     SceneDesc desc = loadScene(test::sourcePath("scenes/examples/oak_stacks.json"));
-    desc.friction_provider = "cpu";
+    desc.friction_provider = "cpu_planar";
     desc.settings.threads = threads;
     auto world = instantiate(desc);
     for (int i = 0; i < 60; ++i) world->step();

@@ -20,8 +20,8 @@ struct Renamed : ConstantProvider {
 
 TEST(FrictionProviders, BuiltInProviders) {
   const FrictionProviders providers = FrictionProviders::builtIn();
-  EXPECT_EQ(providers.names(), (std::vector<std::string>{"cone", "constant", "cpu", "cpu_raster"}));
-  for (const char* name : {"constant", "cone", "cpu", "cpu_raster"}) {
+  EXPECT_EQ(providers.names(), (std::vector<std::string>{"cone", "constant", "cpu", "cpu_planar"}));
+  for (const char* name : {"constant", "cone", "cpu", "cpu_planar"}) {
     EXPECT_TRUE(providers.has(name)) << name;
     EXPECT_EQ(providers.make(name)->name(), name);
   }
@@ -33,7 +33,7 @@ TEST(FrictionProviders, UnknownNameListsTheAvailableOnes) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()),
-              "unknown friction sampler \"velvet\" (available: cone, constant, cpu, cpu_raster)");
+              "unknown friction sampler \"velvet\" (available: cone, constant, cpu, cpu_planar)");
   }
 }
 

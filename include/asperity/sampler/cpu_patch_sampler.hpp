@@ -71,9 +71,9 @@ struct CpuSamplerOptions {
   // either way; tests compare them).
   SimdCopy simd = SimdCopy::Auto;
   // Curved and mesh contacts are rasterised either way; so is every contact under the
-  // contact-area model. Registered as "cpu" (Planar, the default) and "cpu_raster" (Raster,
-  // the reference) in FrictionProviders::builtIn().
-  PatchPath path = PatchPath::Planar;
+  // contact-area model. Registered as "cpu" (Raster, the default) and "cpu_planar" (Planar)
+  // in FrictionProviders::builtIn().
+  PatchPath path = PatchPath::Raster;
   ContactAreaOptions contact_area;
 };
 
@@ -83,7 +83,7 @@ class CpuPatchSampler : public FrictionProvider {
   ~CpuPatchSampler() override;
 
   std::string name() const override {
-    return options_.path == PatchPath::Raster ? "cpu_raster" : "cpu";
+    return options_.path == PatchPath::Planar ? "cpu_planar" : "cpu";
   }
   // Throws asperity::Error for bad settings (validatePatchSettings), a contact naming a body
   // or shape that does not exist, or a surface with a bad texture_size.

@@ -16,14 +16,6 @@
 namespace asperity::sampler_test {
 namespace {
 
-// The GL pipeline renders what the CPU sampler's raster path samples: that path is its
-// reference (the default planar path averages flat footprints from tables instead).
-CpuSamplerOptions rasterPath() {
-  CpuSamplerOptions options;
-  options.path = PatchPath::Raster;
-  return options;
-}
-
 // RGBA8 packing: one quantisation step of mu_max / 255 per coefficient.
 struct GlTraits {
   static std::unique_ptr<FrictionProvider> make() { return std::make_unique<GlPatchSampler>(); }
@@ -70,7 +62,7 @@ void expectAgreement(GlSamplerOptions options, int n, double tolerance) {
                boxBody(Vec3(0.1, 0.1, 0.1), {Vec3(0, 0, 0.1)}, roughMap(32, 2), 0.08, 2.0)},
               {}};
   std::vector<Contact> cpu = corners(scene, 40), gl = cpu;
-  CpuPatchSampler reference(rasterPath());  // what the GL pipeline renders
+  CpuPatchSampler reference;
   GlPatchSampler sampler(options);
   const FrictionSettings s = settings(n);
   reference.computeCoefficients(scene.bodies, cpu, s);
@@ -113,7 +105,7 @@ TEST(GlPatchSampler, UsesAndRestoresTheCallersContext) {
               contactAt(Vec3(0.1, 0.1, 0.0), 1e-4)};
   std::vector<Contact> gl{scene.contact}, cpu{scene.contact};
   sampler.computeCoefficients(scene.bodies, gl, settings());
-  CpuPatchSampler(rasterPath()).computeCoefficients(scene.bodies, cpu, settings());
+  CpuPatchSampler().computeCoefficients(scene.bodies, cpu, settings());
   for (int k = 0; k < 4; ++k) EXPECT_NEAR(gl[0].mu.mu[k], cpu[0].mu.mu[k], 4.0 / 255.0);
   GLint bound = 0, viewport[4] = {};
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
@@ -148,7 +140,7 @@ TEST(GlPatchSampler, ReusesTheSamplesOfContactsThatBarelyMoved) {
   sampler.computeCoefficients(scene.bodies, moved, s);
   FrictionSettings every = s;
   every.reuse_pixels = 0.0;
-  CpuPatchSampler(rasterPath()).computeCoefficients(scene.bodies, fresh, every);
+  CpuPatchSampler().computeCoefficients(scene.bodies, fresh, every);
   EXPECT_EQ(sampler.lastReusedCount(), 20);
   for (size_t i = 0; i < moved.size(); ++i)
     for (int k = 0; k < 4; ++k)

@@ -20,14 +20,6 @@
 namespace asperity {
 namespace {
 
-// The GL pipeline renders what the CPU sampler's raster path samples: that path is its
-// reference (the default planar path averages flat footprints from tables instead).
-CpuSamplerOptions rasterPath() {
-  CpuSamplerOptions options;
-  options.path = PatchPath::Raster;
-  return options;
-}
-
 // Every scene file of the repository, sorted so failures read the same every run.
 std::vector<std::string> repositoryScenes() {
   std::vector<std::string> paths;
@@ -40,11 +32,10 @@ std::vector<std::string> repositoryScenes() {
   return paths;
 }
 
-// The scene stepped with the CPU sampler's raster path (what the GL pipeline renders) until it
-// has contacts (at most `max_steps` steps).
+// The scene stepped with the CPU sampler until it has contacts (at most `max_steps` steps).
 std::unique_ptr<World> steppedToContact(const std::string& path, int max_steps) {
   SceneDesc scene = loadScene(path);
-  scene.friction_provider = "cpu_raster";
+  scene.friction_provider = "cpu";
   std::unique_ptr<World> world = instantiate(scene);
   for (int i = 0; i < max_steps && world->contacts().empty(); ++i) world->step();
   for (int i = 0; i < 5; ++i) world->step();  // let resting contacts settle in
@@ -58,7 +49,7 @@ void expectAgreement(const std::string& path, GlPatchSampler& gl, double packing
   if (cpu_contacts.empty()) return;
   FrictionSettings settings = world->settings().friction;
   settings.directions = std::max(4, settings.directions / 4 * 4);  // GL needs a multiple of 4
-  CpuPatchSampler cpu(rasterPath());
+  CpuPatchSampler cpu;
   cpu.computeCoefficients(world->bodies(), cpu_contacts, settings);
   gl.computeCoefficients(world->bodies(), gl_contacts, settings);
   double worst = 0.0, worst_relative = 0.0;
