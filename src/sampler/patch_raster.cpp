@@ -85,8 +85,10 @@ void setFloatUv(Planar& prim) {
 }
 
 void SurfaceRaster::reset(Side s, int resolution) {
+  // The primitives and margins as for a collect-only pass, then the pixels.
+  resetCollect(s);
+  collect_only = false;
   const int pixels = resolution * resolution;
-  side = s;
   wj0 = 0;
   wj1 = resolution - 1;
   win_lo.assign(static_cast<size_t>(resolution), 0);
@@ -95,10 +97,6 @@ void SurfaceRaster::reset(Side s, int resolution) {
   cov_hi.assign(static_cast<size_t>(resolution), -1);
   key.assign(static_cast<size_t>(pixels), kEmpty);
   primitive.resize(static_cast<size_t>(pixels));
-  planars.clear();
-  curveds.clear();
-  depth = DepthMargins::unlimited();
-  collect_only = false;
 }
 
 void SurfaceRaster::resetCollect(Side s) {

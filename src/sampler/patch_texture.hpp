@@ -33,13 +33,6 @@ inline float floorFast(float x) {
   return static_cast<float>(floorInt(x));
 }
 
-// Wraps a texel index into [0, size) (a mask for powers of two).
-inline int wrapTexel(int index, int size) {
-  if ((size & (size - 1)) == 0) return index & (size - 1);
-  const int m = index % size;
-  return m < 0 ? m + size : m;
-}
-
 // wrapTexel without a division, given 1 / size, for |index| < 2^24: the float quotient is off
 // by at most one, which the two corrections undo (branch-free, so loops vectorise).
 inline int wrapTexelBy(int index, int size, float inv_size) {

@@ -13,12 +13,6 @@ namespace asperity::texgen {
 // How central differences treat the border: Wrap for tiling textures, Clamp for pictures.
 enum class Edge { Wrap, Clamp };
 
-// An index taken modulo `size` into [0, size).
-inline int wrapTexel(int index, int size) {
-  const int m = index % size;
-  return m < 0 ? m + size : m;
-}
-
 // Bilinear value of a tiling grid at texel coordinates (x, y) (texel centres at integers), in
 // the grid's own scalar type; `at(i, j)` reads texel (i, j). The base index is reduced first so
 // huge coordinates stay in int range.

@@ -19,7 +19,6 @@ namespace asperity {
 namespace {
 
 using texgen::bilinearWrapped;
-using texgen::wrapTexel;
 
 // The scale a height PNG stores, or 0 when it stores none (or a bad one).
 double storedScale(const std::vector<uint8_t>& bytes) {

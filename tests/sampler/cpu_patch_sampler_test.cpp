@@ -58,7 +58,7 @@ TEST(CpuPatchSampler, TexelWrapWithoutDivisionIsTheModulo) {
   for (const int size : {1, 2, 3, 8, 10, 160, 288, 1000, 4096}) {
     const float inv = 1.0f / static_cast<float>(size);
     for (int t = -20 * size - 3; t <= 20 * size + 3; ++t) {
-      ASSERT_EQ(patch::wrapTexelBy(t, size, inv), patch::wrapTexel(t, size)) << t << " " << size;
+      ASSERT_EQ(patch::wrapTexelBy(t, size, inv), wrapTexel(t, size)) << t << " " << size;
     }
   }
 }

@@ -13,6 +13,13 @@ namespace asperity {
 
 enum class WrapMode { Repeat, Clamp };
 
+// Wraps a texel index of a tiling map into [0, size) (a mask where size is a power of two).
+inline int wrapTexel(int index, int size) {
+  if ((size & (size - 1)) == 0) return index & (size - 1);
+  const int m = index % size;
+  return m < 0 ? m + size : m;
+}
+
 class NormalMap {
  public:
   NormalMap() = default;
