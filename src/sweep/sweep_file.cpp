@@ -99,7 +99,8 @@ size_t completeLength(const std::string& text, const std::string& header, const 
 int64_t resumePoint(const Sweep& sweep, const std::string& path, const std::string& journal) {
   const std::string text = readText(path);
   int64_t rows = 0;
-  const size_t length = completeLength(text, sweep.csvHeader(), path, rows);
+  // Empty: killed after the journal, before the header (one write, so whole or absent).
+  const size_t length = text.empty() ? 0 : completeLength(text, sweep.csvHeader(), path, rows);
   if (!std::filesystem::exists(journal)) {
     if (rows == sweep.desc().samples && length == text.size()) return -1;
     failOn(path, "nothing to resume: its journal " + journal + " is missing");
@@ -137,12 +138,14 @@ int64_t runSweepToFile(const Sweep& sweep, const SweepFileOptions& options) {
     if (first < 0) return 0;
   }
   auto out = sweepFileCall([&] { return std::make_unique<RecordFile>(path, "", options.resume); });
-  // Only a regular file can be resumed, so only it gets a journal (not /dev/stdout).
+  // Only a regular file can be resumed, so only it gets a journal (not /dev/stdout). The
+  // journal is in place before the header: a file killed at any moment after its first line
+  // can be resumed.
   const bool journaled = out->regular();
-  if (!options.resume) {
+  if (!options.resume && journaled)
+    sweepFileCall([&] { writeFileAtomically(journal, sweepJournal(sweep)); });
+  if (!options.resume || std::filesystem::file_size(path) == 0)
     sweepFileCall([&] { out->append(sweep.csvHeader()); });
-    if (journaled) sweepFileCall([&] { writeFileAtomically(journal, sweepJournal(sweep)); });
-  }
   sweep.runInOrder(options.threads, first, [&](const SampleResult& r) {
     sweepFileCall([&] { out->append(sweep.csvRow(r)); });
   });

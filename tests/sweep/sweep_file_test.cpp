@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+#include <vector>
 
 #include "asperity/error.hpp"
 #include "asperity/sweep/sweep.hpp"
@@ -60,9 +61,13 @@ TEST(SweepFile, AFileCutAnywhereResumesToTheBytesOfOneRun) {
   runSweepToFile(sweep, {whole, 1, false});
   const std::string expected = slurp(whole);
   // Cuts at row ends and inside rows (a killed run leaves whole rows; a torn last row is cut
-  // away), each with the journal a running sweep keeps, resumed on 1 and 3 threads.
+  // away), each with the journal a running sweep keeps, resumed on 1 and 3 threads. The empty
+  // file is a kill after the journal was written and before the header.
   const std::string killed = dir + "/killed.csv";
-  for (size_t cut = sweep.csvHeader().size(); cut <= expected.size(); cut += 37) {
+  std::vector<size_t> cuts = {0};
+  for (size_t cut = sweep.csvHeader().size(); cut <= expected.size(); cut += 37)
+    cuts.push_back(cut);
+  for (const size_t cut : cuts) {
     for (const int threads : {1, 3}) {
       write(killed, expected.substr(0, cut));
       write(sweepJournalPath(killed), sweepJournal(sweep));
