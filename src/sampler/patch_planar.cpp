@@ -3,7 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <functional>
 #include <limits>
+#include <mutex>
+#include <string_view>
 
 #include "asperity/error.hpp"
 #include "asperity/friction/fragment_model.hpp"
@@ -327,12 +331,22 @@ void CoefficientTables::buildRow(const NormalMap& map, const GainMask* mask, flo
                                  int row) {
   const int q = kSamplesPerTexel / sub_;  // samples per cell along each axis
   const auto m = static_cast<size_t>(angles_);
-  std::vector<double> cell(m), running(m, 0.0);
+  // The angles as two float arrays and a float cell sum (at most q x q = 16 samples): the
+  // loop over angles vectorises, where it dominates the build.
+  std::vector<float> dx(m), dy(m), cell(m);
+  std::vector<double> running(m, 0.0);
+  std::vector<size_t> place(m);
+  for (size_t a = 0; a < m; ++a) {
+    dx[a] = directions_[a].x();
+    dy[a] = directions_[a].y();
+    place[a] = (a % static_cast<size_t>(phases_)) * static_cast<size_t>(group_) +
+               a / static_cast<size_t>(phases_);
+  }
   // Point x of the row holds the sums over cells [0, x) (point 0 stays 0).
   float* line = sums_.data() + static_cast<size_t>(row) * static_cast<size_t>(cols_ + 1) * m;
   const double inv_sub = 1.0 / sub_;
   for (int c = 0; c < cols_; ++c) {
-    std::fill(cell.begin(), cell.end(), 0.0);
+    std::fill(cell.begin(), cell.end(), 0.0f);
     for (int sy = 0; sy < q; ++sy) {
       // Texel coordinate along v, texel centres at integers (x = v H - 1/2).
       const double ty = (row + (sy + 0.5) / q) * inv_sub;
@@ -355,15 +369,14 @@ void CoefficientTables::buildRow(const NormalMap& map, const GainMask* mask, flo
                             static_cast<float>((ty + 0.5) / map_height_));
         }
         const Vec2f g = gain * ploughingVector(normal, Side::B, mu_max);
-        for (size_t a = 0; a < m; ++a) cell[a] += std::max(0.0f, g.dot(directions_[a]));
+        const float gx = g.x(), gy = g.y();
+        for (size_t a = 0; a < m; ++a) cell[a] += std::max(0.0f, gx * dx[a] + gy * dy[a]);
       }
     }
     float* point = line + static_cast<size_t>(c + 1) * m;
     for (size_t a = 0; a < m; ++a) {
-      running[a] += cell[a] / (q * q);
-      const size_t place = (a % static_cast<size_t>(phases_)) * static_cast<size_t>(group_) +
-                           a / static_cast<size_t>(phases_);
-      point[place] = static_cast<float>(running[a]);
+      running[a] += static_cast<double>(cell[a]) / (q * q);
+      point[place[a]] = static_cast<float>(running[a]);
     }
   }
 }
@@ -555,16 +568,111 @@ double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<con
   return area;
 }
 
+namespace {
+
+// Every map's tables this process has built, by content: worlds made one after another (a
+// sweep's runs, the tribometer's drags, a batch's worlds, a script's scenes) each load their
+// textures anew, and would otherwise build the same tables again. An entry is kept while a
+// sampler uses it and, beyond that, while the unused ones stay within kKeptBytes (the least
+// recently used go first).
+class SharedTables {
+ public:
+  static SharedTables& instance() {
+    static SharedTables shared;
+    return shared;
+  }
+
+  // Null when the layout does not fit the budget. Builds under the lock: worlds that need the
+  // same texture at once wait for one build (a build runs only its own pool's threads).
+  std::shared_ptr<const CoefficientTables> get(const std::shared_ptr<const NormalMap>& map,
+                                               const std::shared_ptr<const GainMask>& mask,
+                                               float mu_max, int directions,
+                                               const ThreadPool* pool) {
+    const size_t hash = contentHash(*map, mask.get(), mu_max, directions);
+    std::lock_guard lock(mutex_);
+    ++clock_;
+    for (Entry& e : entries_) {
+      if (e.hash == hash && e.mu_max == mu_max && e.directions == directions &&
+          sameMap(*e.map, *map) && sameMask(e.mask.get(), mask.get())) {
+        e.last_use = clock_;
+        return e.tables;
+      }
+    }
+    Entry entry{hash, map, mask, mu_max, directions, nullptr, clock_};
+    const TableLayout layout = tableLayout(map->width(), map->height(), directions);
+    if (layout.angles > 0 && !map->empty())
+      entry.tables = std::make_shared<CoefficientTables>(*map, mask.get(), mu_max, layout, pool);
+    entries_.push_back(entry);
+    forgetUnused();
+    return entry.tables;
+  }
+
+ private:
+  static constexpr size_t kKeptBytes = size_t{128} << 20;
+
+  struct Entry {
+    size_t hash = 0;
+    std::shared_ptr<const NormalMap> map;  // compared texel for texel when the hashes match
+    std::shared_ptr<const GainMask> mask;
+    float mu_max = 0.0f;
+    int directions = 0;
+    std::shared_ptr<const CoefficientTables> tables;  // null: over budget
+    uint64_t last_use = 0;
+  };
+
+  static std::string_view bytesOf(const void* data, size_t size) {
+    return {static_cast<const char*>(data), size};
+  }
+  static size_t contentHash(const NormalMap& map, const GainMask* mask, float mu_max,
+                            int directions) {
+    size_t h = std::hash<std::string_view>{}(
+        bytesOf(map.texels().data(), map.texels().size() * sizeof(Vec3f)));
+    if (mask != nullptr)
+      h ^= std::hash<std::string_view>{}(
+               bytesOf(mask->values.data(), mask->values.size() * sizeof(float))) *
+           31;
+    return h ^ (std::hash<float>{}(mu_max) * 7) ^ (static_cast<size_t>(directions) << 1);
+  }
+  static bool sameMap(const NormalMap& a, const NormalMap& b) {
+    return &a == &b || (a.width() == b.width() && a.height() == b.height() &&
+                        std::memcmp(a.texels().data(), b.texels().data(),
+                                    a.texels().size() * sizeof(Vec3f)) == 0);
+  }
+  static bool sameMask(const GainMask* a, const GainMask* b) {
+    if (a == b) return true;
+    return a != nullptr && b != nullptr && a->width == b->width && a->height == b->height &&
+           std::memcmp(a->values.data(), b->values.data(), a->values.size() * sizeof(float)) == 0;
+  }
+
+  // Drops the least recently used entries no sampler holds while those exceed kKeptBytes.
+  void forgetUnused() {
+    for (;;) {
+      size_t unused_bytes = 0;
+      auto oldest = entries_.end();
+      for (auto it = entries_.begin(); it != entries_.end(); ++it) {
+        if (it->tables.use_count() > 1) continue;
+        unused_bytes += it->tables ? it->tables->bytes() : 0;
+        if (oldest == entries_.end() || it->last_use < oldest->last_use) oldest = it;
+      }
+      if (unused_bytes <= kKeptBytes || oldest == entries_.end()) return;
+      entries_.erase(oldest);
+    }
+  }
+
+  std::mutex mutex_;
+  std::vector<Entry> entries_;
+  uint64_t clock_ = 0;
+};
+
+}  // namespace
+
 const CoefficientTables* TableCache::get(const std::shared_ptr<const NormalMap>& map,
                                          const std::shared_ptr<const GainMask>& mask, float mu_max,
                                          int directions, const ThreadPool* pool) {
   const Key key{map.get(), mask.get(), mu_max, directions};
   auto it = entries_.find(key);
   if (it != entries_.end()) return it->second.tables.get();
-  Entry entry{nullptr, map, mask};
-  const TableLayout layout = tableLayout(map->width(), map->height(), directions);
-  if (layout.angles > 0 && !map->empty())
-    entry.tables = std::make_unique<CoefficientTables>(*map, mask.get(), mu_max, layout, pool);
+  Entry entry{SharedTables::instance().get(map, mask, mu_max, directions, pool), map, mask};
   return entries_.emplace(key, std::move(entry)).first->second.tables.get();
 }
 

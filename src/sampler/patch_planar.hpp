@@ -116,6 +116,8 @@ class CoefficientTables {
 
 // Tables by texture identity, shared by every body whose surface uses the same map. get() builds
 // a missing entry: threads may share the cache only for entries already in it (prepare first).
+// The tables themselves come from a store shared by the process, by the map's content: a world
+// made after another with the same textures finds them built.
 class TableCache {
  public:
   // Null when the layout does not fit the budget.
@@ -131,7 +133,7 @@ class TableCache {
  private:
   using Key = std::tuple<const NormalMap*, const GainMask*, float, int>;
   struct Entry {
-    std::unique_ptr<CoefficientTables> tables;  // null: over budget
+    std::shared_ptr<const CoefficientTables> tables;  // null: over budget
     std::shared_ptr<const NormalMap> map;       // kept alive: the key is its address
     std::shared_ptr<const GainMask> mask;
   };

@@ -123,6 +123,25 @@ TEST(PlanarTables, BudgetHoldsAndOversizedTexturesAreRasterised) {
   EXPECT_EQ(patch::tableLayout(8192, 8192, 16).angles, 0);
 }
 
+TEST(PlanarTables, WorldsWithTheSameTexturesShareOneBuild) {
+  // Two caches (two worlds) with maps loaded apart but equal texel for texel get the same
+  // tables; another map, another mask or another mu_max get their own.
+  const auto map = uniformSlope(32, 0.25f, 0.1f);
+  const auto copy = uniformSlope(32, 0.25f, 0.1f);
+  const auto other = uniformSlope(32, 0.25f, 0.11f);
+  auto mask = std::make_shared<GainMask>();
+  mask->width = mask->height = 2;
+  mask->values = {1.0f, 0.5f, 0.5f, 1.0f};
+  patch::TableCache first, second;
+  const patch::CoefficientTables* built = first.get(map, nullptr, 4.0f, 16, nullptr);
+  ASSERT_NE(built, nullptr);
+  EXPECT_EQ(second.get(copy, nullptr, 4.0f, 16, nullptr), built);
+  EXPECT_NE(second.get(other, nullptr, 4.0f, 16, nullptr), built);
+  EXPECT_NE(second.get(copy, mask, 4.0f, 16, nullptr), built);
+  EXPECT_NE(second.get(copy, nullptr, 3.0f, 16, nullptr), built);
+  EXPECT_EQ(second.find(copy.get(), nullptr, 4.0f, 16), built);
+}
+
 // One box resting on a plane (both with `map`), turned by `yaw` about n, its frame turned too.
 std::unique_ptr<World> boxOnPlane(const std::shared_ptr<const NormalMap>& map, double yaw,
                                   const std::string& provider) {
