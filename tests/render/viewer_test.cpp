@@ -59,9 +59,11 @@ TEST(Viewer, RendersFramesUnderXvfbAndTakesAScreenshot) {
 TEST(Viewer, MissingSceneIsAOneLineError) {
   ASSERT_EQ(shell("command -v xvfb-run >/dev/null"), 0) << "xvfb-run is missing (package xvfb)";
   const std::string dir = test::tempDir("viewer");
-  const std::string command = "xvfb-run -a '" + std::string(ASPERITY_BIN_DIR) +
-                              "/asperity-viewer' /nonexistent.json --frames 1 >" + dir + "/out 2>" +
-                              dir + "/err";
+  // The viewer's stderr alone: xvfb-run may add its own line on the same stream ("problem
+  // while cleaning up temporary directory" when parallel tests share /tmp).
+  const std::string command = "xvfb-run -a sh -c \"exec '" + std::string(ASPERITY_BIN_DIR) +
+                              "/asperity-viewer' /nonexistent.json --frames 1 2>'" + dir +
+                              "/err'\" >" + dir + "/out 2>" + dir + "/xvfb_err";
   EXPECT_NE(shell(command), 0);
   // One line on stderr, naming the program and the missing file.
   std::ifstream err(dir + "/err");
