@@ -465,8 +465,8 @@ void CpuPatchSampler::prepareTables(std::span<const Body> bodies, const Contact&
   }
 }
 
-size_t CpuPatchSampler::tableBytes() const {
-  return tables_->bytes();
+std::vector<TextureTables> CpuPatchSampler::tables() const {
+  return tables_->list();
 }
 
 void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,

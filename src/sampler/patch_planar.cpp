@@ -682,11 +682,16 @@ const CoefficientTables* TableCache::find(const NormalMap* map, const GainMask* 
   return it == entries_.end() ? nullptr : it->second.tables.get();
 }
 
-size_t TableCache::bytes() const {
-  size_t total = 0;
-  for (const auto& [key, entry] : entries_)
-    if (entry.tables) total += entry.tables->bytes();
-  return total;
+std::vector<TextureTables> TableCache::list() const {
+  std::vector<TextureTables> out;
+  std::vector<const CoefficientTables*> listed;
+  for (const auto& [key, entry] : entries_) {
+    const CoefficientTables* tables = entry.tables.get();
+    if (!tables || std::find(listed.begin(), listed.end(), tables) != listed.end()) continue;
+    listed.push_back(tables);
+    out.push_back({entry.map.get(), entry.mask.get(), tables->bytes()});
+  }
+  return out;
 }
 
 bool isFlatFace(const Planar& prim) {

@@ -32,6 +32,7 @@
 
 #include "asperity/geometry/surface.hpp"
 #include "asperity/math/types.hpp"
+#include "asperity/sampler/friction_provider.hpp"
 #include "sampler/patch_raster.hpp"
 
 namespace asperity {
@@ -127,8 +128,8 @@ class TableCache {
   // Looks an entry up without building it (null when absent or over budget).
   const CoefficientTables* find(const NormalMap* map, const GainMask* mask, float mu_max,
                                 int directions) const;
-  size_t bytes() const;
-  size_t size() const { return entries_.size(); }
+  // Every texture's tables, each once (maps equal in content share theirs).
+  std::vector<TextureTables> list() const;
 
  private:
   using Key = std::tuple<const NormalMap*, const GainMask*, float, int>;

@@ -102,9 +102,8 @@ class CpuPatchSampler : public FrictionProvider {
   double lastAveragingTimeMs() const override { return averaging_ms_; }
   int lastReusedCount() const override { return reused_count_; }
   int lastPlanarCount() const override { return planar_count_; }
-  // Bytes of the planar path's tables, every texture together (each built once, shared by
-  // every body that uses it).
-  size_t tableBytes() const override;
+  // The planar path's tables, one entry per texture.
+  std::vector<TextureTables> tables() const override;
   void forgetHistory() override;
   void saveHistory(StateWriter& out) const override;
   void loadHistory(StateReader& in) override;

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "asperity/collision/contact.hpp"
 #include "asperity/dynamics/body.hpp"
@@ -16,6 +17,14 @@ namespace asperity {
 // The friction provider of a world built in code and of a scene that names none: whole-texture
 // cones (sampler/cone_provider.hpp), anisotropic from the textures at almost no cost.
 inline constexpr const char* kDefaultFrictionProvider = "cone";
+
+// The tables a provider keeps for one texture (the cpu sampler's planar path): the normal map
+// and gain mask (null: none) they tabulate, and their size.
+struct TextureTables {
+  const NormalMap* map = nullptr;
+  const GainMask* mask = nullptr;
+  size_t bytes = 0;
+};
 
 // What every provider needs to know (SPEC 3, Eq. 7).
 struct FrictionSettings {
@@ -76,8 +85,14 @@ class FrictionProvider {
   virtual int lastReusedCount() const { return 0; }
   // Contacts of the last call sampled from prefiltered tables (the cpu sampler's planar path).
   virtual int lastPlanarCount() const { return 0; }
-  // Bytes of tables the provider keeps per texture (all textures together).
-  virtual size_t tableBytes() const { return 0; }
+  // The tables the provider keeps, one entry per texture (each built once, shared by every
+  // body that uses it), and their bytes all together.
+  virtual std::vector<TextureTables> tables() const { return {}; }
+  size_t tableBytes() const {
+    size_t total = 0;
+    for (const TextureTables& t : tables()) total += t.bytes;
+    return total;
+  }
   // Forgets what earlier calls left behind (kept samples), as in a new provider.
   virtual void forgetHistory() {}
   // What earlier calls left for the next one (kept samples), saved and restored bit for bit
