@@ -573,8 +573,8 @@ namespace {
 // Every map's tables this process has built, by content: worlds made one after another (a
 // sweep's runs, the tribometer's drags, a batch's worlds, a script's scenes) each load their
 // textures anew, and would otherwise build the same tables again. An entry is kept while a
-// sampler uses it and, beyond that, while the unused ones stay within kKeptBytes (the least
-// recently used go first).
+// sampler uses it and, beyond that, while the unused ones (tables, maps and masks) stay within
+// kKeptBytes (the least recently used go first).
 class SharedTables {
  public:
   static SharedTables& instance() {
@@ -582,12 +582,15 @@ class SharedTables {
     return shared;
   }
 
-  // Null when the layout does not fit the budget. Builds under the lock: worlds that need the
-  // same texture at once wait for one build (a build runs only its own pool's threads).
+  // Null when the layout does not fit the budget (nothing is kept then). Builds under the
+  // lock: worlds that need the same texture at once wait for one build (a build runs only its
+  // own pool's threads).
   std::shared_ptr<const CoefficientTables> get(const std::shared_ptr<const NormalMap>& map,
                                                const std::shared_ptr<const GainMask>& mask,
                                                float mu_max, int directions,
                                                const ThreadPool* pool) {
+    const TableLayout layout = tableLayout(map->width(), map->height(), directions);
+    if (layout.angles <= 0 || map->empty()) return nullptr;
     const size_t hash = contentHash(*map, mask.get(), mu_max, directions);
     std::lock_guard lock(mutex_);
     ++clock_;
@@ -598,10 +601,9 @@ class SharedTables {
         return e.tables;
       }
     }
-    Entry entry{hash, map, mask, mu_max, directions, nullptr, clock_};
-    const TableLayout layout = tableLayout(map->width(), map->height(), directions);
-    if (layout.angles > 0 && !map->empty())
-      entry.tables = std::make_shared<CoefficientTables>(*map, mask.get(), mu_max, layout, pool);
+    Entry entry{hash, map, mask, mu_max, directions,
+                std::make_shared<CoefficientTables>(*map, mask.get(), mu_max, layout, pool),
+                clock_};
     entries_.push_back(entry);
     forgetUnused();
     return entry.tables;
@@ -616,8 +618,13 @@ class SharedTables {
     std::shared_ptr<const GainMask> mask;
     float mu_max = 0.0f;
     int directions = 0;
-    std::shared_ptr<const CoefficientTables> tables;  // null: over budget
+    std::shared_ptr<const CoefficientTables> tables;
     uint64_t last_use = 0;
+    // What an unused entry keeps: its tables and the map and mask they are compared with.
+    size_t bytes() const {
+      return tables->bytes() + map->texels().size() * sizeof(Vec3f) +
+             (mask ? mask->values.size() * sizeof(float) : 0);
+    }
   };
 
   static std::string_view bytesOf(const void* data, size_t size) {
@@ -651,7 +658,7 @@ class SharedTables {
       auto oldest = entries_.end();
       for (auto it = entries_.begin(); it != entries_.end(); ++it) {
         if (it->tables.use_count() > 1) continue;
-        unused_bytes += it->tables ? it->tables->bytes() : 0;
+        unused_bytes += it->bytes();
         if (oldest == entries_.end() || it->last_use < oldest->last_use) oldest = it;
       }
       if (unused_bytes <= kKeptBytes || oldest == entries_.end()) return;

@@ -140,6 +140,9 @@ TEST(PlanarTables, WorldsWithTheSameTexturesShareOneBuild) {
   EXPECT_NE(second.get(copy, mask, 4.0f, 16, nullptr), built);
   EXPECT_NE(second.get(copy, nullptr, 3.0f, 16, nullptr), built);
   EXPECT_EQ(second.find(copy.get(), nullptr, 4.0f, 16), built);
+  // A map whose tables would exceed the budget gets none (it is rasterised).
+  ASSERT_EQ(patch::tableLayout(512, 512, 64).angles, 0);
+  EXPECT_EQ(first.get(uniformSlope(512, 0.1f, 0.1f), nullptr, 4.0f, 64, nullptr), nullptr);
 }
 
 // One box resting on a plane (both with `map`), turned by `yaw` about n, its frame turned too.
