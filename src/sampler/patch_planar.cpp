@@ -310,17 +310,21 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
     throw Error("planar tables: empty map or bad layout (sub " + std::to_string(sub_) +
                 ", angles " + std::to_string(angles_) + ")");
   }
-  directions_.resize(static_cast<size_t>(angles_));
+  dx_.resize(static_cast<size_t>(angles_));
+  dy_.resize(static_cast<size_t>(angles_));
   units_.resize(static_cast<size_t>(angles_));
   for (int a = 0; a < angles_; ++a) {
     const double t = kTwoPi * a / angles_;
     units_[static_cast<size_t>(a)] = Vec2(std::cos(t), std::sin(t));
-    directions_[static_cast<size_t>(a)] =
-        Vec2f(static_cast<float>(std::cos(t)), static_cast<float>(std::sin(t)));
+    dx_[static_cast<size_t>(a)] = static_cast<float>(std::cos(t));
+    dy_[static_cast<size_t>(a)] = static_cast<float>(std::sin(t));
   }
   sin_step_ = std::sin(kTwoPi / angles_);
   group_ = layout.group > 0 && angles_ % layout.group == 0 ? layout.group : angles_;
   phases_ = angles_ / group_;
+  place_.resize(static_cast<size_t>(angles_));
+  for (int a = 0; a < angles_; ++a)
+    place_[static_cast<size_t>(a)] = static_cast<size_t>((a % phases_) * group_ + a / phases_);
   sums_.assign(layout.bytes(map.width(), map.height()) / sizeof(float), 0.0f);
   // Rows are independent: each thread writes its own running sums, in the same order of sums.
   forEachOn(pool, static_cast<size_t>(rows_), 4,
@@ -331,17 +335,12 @@ void CoefficientTables::buildRow(const NormalMap& map, const GainMask* mask, flo
                                  int row) {
   const int q = kSamplesPerTexel / sub_;  // samples per cell along each axis
   const auto m = static_cast<size_t>(angles_);
-  // The angles as two float arrays and a float cell sum (at most q x q = 16 samples): the
-  // loop over angles vectorises, where it dominates the build.
-  std::vector<float> dx(m), dy(m), cell(m);
+  // A cell's sum in float (at most q x q = 16 samples) over the angles' two arrays: the loop
+  // over angles vectorises, where it dominates the build.
+  std::vector<float> cell(m);
   std::vector<double> running(m, 0.0);
-  std::vector<size_t> place(m);
-  for (size_t a = 0; a < m; ++a) {
-    dx[a] = directions_[a].x();
-    dy[a] = directions_[a].y();
-    place[a] = (a % static_cast<size_t>(phases_)) * static_cast<size_t>(group_) +
-               a / static_cast<size_t>(phases_);
-  }
+  const float* dx = dx_.data();
+  const float* dy = dy_.data();
   // Point x of the row holds the sums over cells [0, x) (point 0 stays 0).
   float* line = sums_.data() + static_cast<size_t>(row) * static_cast<size_t>(cols_ + 1) * m;
   const double inv_sub = 1.0 / sub_;
@@ -376,7 +375,7 @@ void CoefficientTables::buildRow(const NormalMap& map, const GainMask* mask, flo
     float* point = line + static_cast<size_t>(c + 1) * m;
     for (size_t a = 0; a < m; ++a) {
       running[a] += static_cast<double>(cell[a]) / (q * q);
-      point[place[a]] = static_cast<float>(running[a]);
+      point[place_[a]] = static_cast<float>(running[a]);
     }
   }
 }
@@ -563,7 +562,7 @@ double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<con
   const double area = accumulate(polygon, std::span<const Range>(&range, 1), all.data());
   for (size_t k = 0; k < which.size(); ++k) {
     const int a = which[k];
-    out[k] = all[static_cast<size_t>((a % phases_) * group_ + a / phases_)];
+    out[k] = all[place_[static_cast<size_t>(a)]];
   }
   return area;
 }

@@ -106,7 +106,8 @@ class CoefficientTables {
   int cols_ = 0, rows_ = 0, sub_ = 1, angles_ = 0, group_ = 1, phases_ = 1;
   int map_width_ = 0, map_height_ = 0;
   double inv_cols_ = 1.0;
-  std::vector<Vec2f> directions_;  // the tabulated e
+  std::vector<float> dx_, dy_;     // the tabulated e, as two arrays (the build's loop vectorises)
+  std::vector<size_t> place_;      // where angle a lies among a point's values (see sums_)
   std::vector<Vec2> units_;        // the same in double
   double sin_step_ = 0.0;
   // Running sums along each row of cells (float: a row's values stay small): R(row, x) = the
