@@ -11,10 +11,13 @@ namespace asperity::patch {
 
 namespace {
 
-// Samples of fewer pixels are not kept while sliding along a plain plane (alikeEverywhere):
-// one pixel centre crossing a face's edge within the tolerated move changes their means by
-// more than 1 / 32 of a pixel's spread (on the crawling worm's sawtooth skin by up to 0.37 in
-// mu, its contacts kept step after step), and they are cheap to sample.
+// A pixel centre crossing a face's edge within the tolerated move changes a sample's means by
+// up to the coefficients' spread over its pixel count. Samples of fewer than 8 pixels are not
+// kept at all (a box of a fallen stack leaning on another by its edge kept a one-pixel sample
+// of mu 0.90 where a fresh one found none), those of fewer than 32 not while sliding along a
+// plain plane (alikeEverywhere; on the crawling worm's sawtooth skin they strayed by up to 0.37
+// in mu, kept step after step). Such samples are cheap to take again.
+constexpr int kFewestPixelsToKeep = 8;
 constexpr int kFewestPixelsToSlide = 32;
 
 struct Tolerance {
@@ -167,6 +170,7 @@ void PatchReuse::reuse(std::span<const Body> bodies, std::span<Contact> contacts
     const size_t found = find(keys_, keyOf(c), cursor);
     if (found == kNone) continue;
     const Sample& s = samples_[found];
+    if (s.covered_pixels < kFewestPixelsToKeep) continue;
     Motion a = motionOf(bodies[c.body_a], c, s.on_a, half);
     Motion b = motionOf(bodies[c.body_b], c, s.on_b, half);
     if (!holds(a, b, s.phi, c.phi, s.depth, tol)) {
