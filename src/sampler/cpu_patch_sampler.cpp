@@ -347,7 +347,13 @@ bool CpuPatchSampler::State::planarFace(const patch::Volume& volume, const patch
   }
   if (out.face == nullptr || out.face->material.map == nullptr) return true;
   out.tables = findTables(out.face->material, settings);
-  return out.tables != nullptr;  // a texture over the tables' budget is rasterised
+  if (out.tables == nullptr) return false;  // a texture over the tables' budget is rasterised
+  // A tilted face whose first-order shading may miss more than kMaxTiltError (in mu, after
+  // its gain) is rasterised.
+  const double gain = patch::gainsOf(range, range, 0.0).k_a;
+  return std::abs(gain) * out.tables->tiltError() * patch::tiltOf(*out.face) /
+             std::tan(patch::kMaxTilt) <=
+         patch::kMaxTiltError;
 }
 
 namespace {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+
 #include <functional>
 #include <limits>
 #include <mutex>
@@ -11,6 +12,7 @@
 
 #include "asperity/error.hpp"
 #include "asperity/friction/fragment_model.hpp"
+#include "math/simd.hpp"
 #include "parallel/thread_pool.hpp"
 #include "sampler/patch_texture.hpp"
 
@@ -279,7 +281,7 @@ int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar*
 size_t TableLayout::bytes(int width, int height) const {
   const size_t rows = static_cast<size_t>(height) * static_cast<size_t>(sub);
   const size_t points = static_cast<size_t>(width) * static_cast<size_t>(sub) + 1;
-  return rows * points * static_cast<size_t>(angles) * sizeof(float);
+  return rows * points * CoefficientTables::kChannels * static_cast<size_t>(angles) * sizeof(float);
 }
 
 TableLayout tableLayout(int width, int height, int directions) {
@@ -298,7 +300,7 @@ TableLayout tableLayout(int width, int height, int directions) {
 }
 
 CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask, float mu_max,
-                                     TableLayout layout, const ThreadPool* pool)
+                                     TableLayout layout, const ThreadPool* pool, SimdCopy copy)
     : cols_(map.width() * layout.sub),
       rows_(map.height() * layout.sub),
       sub_(layout.sub),
@@ -325,24 +327,116 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
   place_.resize(static_cast<size_t>(angles_));
   for (int a = 0; a < angles_; ++a)
     place_[static_cast<size_t>(a)] = static_cast<size_t>((a % phases_) * group_ + a / phases_);
-  sums_.assign(layout.bytes(map.width(), map.height()) / sizeof(float), 0.0f);
+  // f's sums, then the gradient's (x and y side by side per point): a flat face reads only the
+  // first, as dense as it was without the gradient.
+  const size_t f_floats = layout.bytes(map.width(), map.height()) / sizeof(float) / kChannels;
+  sums_.assign(f_floats, 0.0f);
+  gradient_.assign((kChannels - 1) * f_floats, 0.0f);
   // Rows are independent: each thread writes its own running sums, in the same order of sums.
+  tilt_error_rows_.assign(static_cast<size_t>(rows_) * static_cast<size_t>(angles_), 0.0);
   forEachOn(pool, static_cast<size_t>(rows_), 4,
-            [&](size_t row) { buildRow(map, mask, mu_max, static_cast<int>(row)); });
+            [&](size_t row) { buildRow(map, mask, mu_max, copy, static_cast<int>(row)); });
+  // The mean over the map, rows added in order (the same bits for any thread count); the
+  // largest over the angles.
+  const auto m = static_cast<size_t>(angles_);
+  std::vector<double> error(m, 0.0);
+  for (size_t row = 0; row < static_cast<size_t>(rows_); ++row)
+    for (size_t a = 0; a < m; ++a) error[a] += tilt_error_rows_[row * m + a];
+  const double samples = static_cast<double>(rows_) * cols_ * (kSamplesPerTexel / sub_) *
+                         (kSamplesPerTexel / sub_);
+  tilt_error_ = *std::max_element(error.begin(), error.end()) / samples;
+  tilt_error_rows_ = {};
 }
 
+namespace {
+
+// How a fragment's coefficient max(0, f) changes as its face tilts (see CoefficientTables): at
+// tilt 0, where f > 0, the gradient of f in tau is -k (e + s (r . e) r). Unclamped (|g| below
+// mu_max) f = (2 / pi) (p . e - tau . e) / (1 + p . tau) with p the slope m_xy / m_z, so k =
+// 2 / pi, s = 1, r = p. Clamped f = mu_max (m . d) / |m_tb|, with m . d = q . e - m_z tau . e
+// and |m_tb| = |q| - m_z (q . tau) / |q| to first order (q = m_xy): k = mu_max m_z / |q|, s = -1,
+// r = q / |q|. Both times the gain.
+struct TiltGradient {
+  float k = 0.0f, s = 0.0f, rx = 0.0f, ry = 0.0f;
+};
+
+TiltGradient tiltGradientOf(const Vec3f& m, float gain, float mu_max) {
+  constexpr float kTwoOverPi = static_cast<float>(2.0 / kPi);
+  const float radius = std::hypot(m.x(), m.y());
+  // The branch ploughingVector takes.
+  if (m.z() > 0.0f && kTwoOverPi * radius <= mu_max * m.z()) {
+    return {gain * kTwoOverPi, 1.0f, m.x() / m.z(), m.y() / m.z()};
+  }
+  if (!(radius > 0.0f)) return {};
+  return {gain * mu_max * m.z() / radius, -1.0f, m.x() / radius, m.y() / radius};
+}
+
+// One sample added to a cell's sums at each of m angles (e = (dx, dy)): f = max(0, g . e), its
+// gradient in the tilt where f > 0 (TiltGradient), and the first order's error bound at the
+// largest tilt tan_max, channel after channel in `cell` (4 m floats).
+[[gnu::always_inline]] inline void addSampleBody(float gx, float gy, const TiltGradient& t,
+                                                 float tan_max, const float* __restrict dx,
+                                                 const float* __restrict dy, size_t m,
+                                                 float* __restrict cell) {
+  float* __restrict cf = cell;
+  float* __restrict cx = cell + m;
+  float* __restrict cy = cell + 2 * m;
+  float* __restrict ce = cell + 3 * m;
+  const float k = t.k, rx = t.rx, ry = t.ry, srx = t.s * t.rx, sry = t.s * t.ry;
+  for (size_t a = 0; a < m; ++a) {
+    const float f = gx * dx[a] + gy * dy[a];
+    const float along = rx * dx[a] + ry * dy[a];
+    const float ux = -k * (dx[a] + along * srx), uy = -k * (dy[a] + along * sry);
+    // 1 where f > 0, else 0 (f = 0 too: the tiny shift), without a comparison beside max(0,
+    // f): GCC 12 vectorises this loop only so.
+    const float on = 0.5f + std::copysign(0.5f, f - 1e-30f);
+    cf[a] += std::max(0.0f, f);
+    cx[a] += on * ux;
+    cy[a] += on * uy;
+    // First order errs only where the largest tilt can carry f across 0.
+    ce[a] += std::max(0.0f, std::sqrt(ux * ux + uy * uy) * tan_max - std::abs(f));
+  }
+}
+
+#if ASPERITY_AVX2_COPIES
+// The AVX2 copy (math/simd.hpp): eight angles per register, the same bits.
+ASPERITY_TARGET_AVX2 void addSampleAvx2(float gx, float gy, const TiltGradient& t, float tan_max,
+                                        const float* dx, const float* dy, size_t m, float* cell) {
+  addSampleBody(gx, gy, t, tan_max, dx, dy, m, cell);
+}
+#endif
+
+void addSample(bool avx2, float gx, float gy, const TiltGradient& t, float tan_max,
+               const float* dx, const float* dy, size_t m, float* cell) {
+#if ASPERITY_AVX2_COPIES
+  if (avx2) return addSampleAvx2(gx, gy, t, tan_max, dx, dy, m, cell);
+#endif
+  (void)avx2;
+  addSampleBody(gx, gy, t, tan_max, dx, dy, m, cell);
+}
+
+}  // namespace
+
 void CoefficientTables::buildRow(const NormalMap& map, const GainMask* mask, float mu_max,
-                                 int row) {
+                                 SimdCopy copy, int row) {
   const int q = kSamplesPerTexel / sub_;  // samples per cell along each axis
   const auto m = static_cast<size_t>(angles_);
-  // A cell's sum in float (at most q x q = 16 samples) over the angles' two arrays: the loop
-  // over angles vectorises, where it dominates the build.
-  std::vector<float> cell(m);
-  std::vector<double> running(m, 0.0);
+  // A cell's sums in float (at most q x q = 16 samples) over the angles' two arrays: the loops
+  // over angles vectorise, where they dominate the build. Channel by channel: f, then its
+  // gradient's x and y (kChannels).
+  // The last channel: the first order's error bound at kMaxTilt (tiltError).
+  std::vector<float> cell((kChannels + 1) * m);
+  const float* ce = cell.data() + kChannels * m;
+  std::vector<double> running(kChannels * m, 0.0);
+  const auto tan_max = static_cast<float>(std::tan(kMaxTilt));
+  const bool avx2 = simd::avx2(copy);
+  double* row_error = tilt_error_rows_.data() + static_cast<size_t>(row) * m;
   const float* dx = dx_.data();
   const float* dy = dy_.data();
   // Point x of the row holds the sums over cells [0, x) (point 0 stays 0).
-  float* line = sums_.data() + static_cast<size_t>(row) * static_cast<size_t>(cols_ + 1) * m;
+  const size_t points_before = static_cast<size_t>(row) * static_cast<size_t>(cols_ + 1);
+  float* line = sums_.data() + points_before * m;
+  float* gradient_line = gradient_.data() + points_before * (kChannels - 1) * m;
   const double inv_sub = 1.0 / sub_;
   for (int c = 0; c < cols_; ++c) {
     std::fill(cell.begin(), cell.end(), 0.0f);
@@ -368,14 +462,21 @@ void CoefficientTables::buildRow(const NormalMap& map, const GainMask* mask, flo
                             static_cast<float>((ty + 0.5) / map_height_));
         }
         const Vec2f g = gain * ploughingVector(normal, Side::B, mu_max);
-        const float gx = g.x(), gy = g.y();
-        for (size_t a = 0; a < m; ++a) cell[a] += std::max(0.0f, gx * dx[a] + gy * dy[a]);
+        addSample(avx2, g.x(), g.y(), tiltGradientOf(normal, gain, mu_max), tan_max, dx, dy, m,
+                  cell.data());
       }
     }
-    float* point = line + static_cast<size_t>(c + 1) * m;
-    for (size_t a = 0; a < m; ++a) {
-      running[a] += static_cast<double>(cell[a]) / (q * q);
-      point[place_[a]] = static_cast<float>(running[a]);
+    for (size_t a = 0; a < m; ++a) row_error[a] += ce[a];
+    for (size_t ch = 0; ch < kChannels; ++ch) {
+      // Channel 0 into sums_, 1 and 2 into gradient_ (each point's x values, then its y).
+      float* point = ch == 0 ? line + static_cast<size_t>(c + 1) * m
+                             : gradient_line + static_cast<size_t>(c + 1) * (kChannels - 1) * m +
+                                   (ch - 1) * m;
+      for (size_t a = 0; a < m; ++a) {
+        double& sum = running[ch * m + a];
+        sum += static_cast<double>(cell[ch * m + a]) / (q * q);
+        point[place_[a]] = static_cast<float>(sum);
+      }
     }
   }
 }
@@ -438,7 +539,8 @@ void addStrips(const Strip* strips, size_t count, size_t stride, int begin, int 
 
 }  // namespace
 
-double CoefficientTables::accumulate(std::span<const Vec2> polygon, std::span<const Range> ranges,
+double CoefficientTables::accumulate(const float* table, size_t per_point,
+                                     std::span<const Vec2> polygon, std::span<const Range> ranges,
                                      float* out) const {
   const size_t vertices = std::min<size_t>(polygon.size(), 32);
   size_t width = 0;
@@ -463,7 +565,7 @@ double CoefficientTables::accumulate(std::span<const Vec2> polygon, std::span<co
   Chains chains(v.data(), n);
   ymin = chains.ymin();
   const double ymax = chains.ymax();
-  const auto m = static_cast<size_t>(angles_);
+  const size_t m = per_point;
   const size_t line = static_cast<size_t>(cols_ + 1) * m;
   auto endOf = [&](const float* row, double x) {
     // x < 2 cols nearly always (footprints far smaller than a repeat); any x is handled.
@@ -496,21 +598,22 @@ double CoefficientTables::accumulate(std::span<const Vec2> polygon, std::span<co
     gathered = 0;
     repeats = false;
   };
-  const size_t first_byte = static_cast<size_t>(ranges[0].begin) * sizeof(float);
-  const size_t last_byte =
-      static_cast<size_t>(ranges.back().begin + ranges.back().len) * sizeof(float) - 1;
   auto prefetch = [&](const SpanEnd& e) {
     const char* p = reinterpret_cast<const char*>(e.cell);
     const size_t point = m * sizeof(float);
-    __builtin_prefetch(p + first_byte);
-    __builtin_prefetch(p + last_byte);
-    __builtin_prefetch(p + point + first_byte);
-    __builtin_prefetch(p + point + last_byte);
+    for (const Range& r : ranges) {
+      const size_t first_byte = static_cast<size_t>(r.begin) * sizeof(float);
+      const size_t last_byte = static_cast<size_t>(r.begin + r.len) * sizeof(float) - 1;
+      __builtin_prefetch(p + first_byte);
+      __builtin_prefetch(p + last_byte);
+      __builtin_prefetch(p + point + first_byte);
+      __builtin_prefetch(p + point + last_byte);
+    }
   };
   const auto first = static_cast<long long>(std::floor(ymin));
   int row_index = positiveMod(first, rows_);
   for (long long r = first; static_cast<double>(r) < ymax; ++r) {
-    const float* row = sums_.data() + static_cast<size_t>(row_index) * line;
+    const float* row = table + static_cast<size_t>(row_index) * line;
     row_index = row_index + 1 == rows_ ? 0 : row_index + 1;
     double y0 = std::max(static_cast<double>(r), ymin);
     const double row_end = std::min(static_cast<double>(r + 1), ymax);
@@ -537,10 +640,10 @@ double CoefficientTables::accumulate(std::span<const Vec2> polygon, std::span<co
 }
 
 double CoefficientTables::integrateGroups(std::span<const Vec2> polygon, int phase, int count,
-                                          float* out) const {
+                                          bool gradient, float* out) const {
   const int first = phase % phases_;
   const int second = (first + 1) % phases_;
-  std::array<Range, 2> ranges{};
+  std::array<Range, 2 * kChannels> ranges{};
   size_t used = 1;
   if (count < 2) {
     ranges[0] = {first * group_, group_};
@@ -551,15 +654,34 @@ double CoefficientTables::integrateGroups(std::span<const Vec2> polygon, int pha
     ranges[1] = {second * group_, group_};
     used = 2;
   }
-  return accumulate(polygon, std::span<const Range>(ranges.data(), used), out);
+  const auto m = static_cast<size_t>(angles_);
+  const double area =
+      accumulate(sums_.data(), m, polygon, std::span<const Range>(ranges.data(), used), out);
+  if (gradient) {
+    // The same places in the gradient's x values and then in its y values.
+    const size_t per_channel = used;
+    for (size_t r = 0; r < per_channel; ++r) {
+      ranges[used++] = {ranges[r].begin + angles_, ranges[r].len};
+    }
+    size_t width = 0;
+    for (size_t r = 0; r < per_channel; ++r) width += static_cast<size_t>(ranges[r].len);
+    accumulate(gradient_.data(), (kChannels - 1) * m, polygon,
+               std::span<const Range>(ranges.data(), used), out + width);
+  }
+  return area;
 }
 
 double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<const int> which,
-                                    std::span<double> out) const {
+                                    std::span<double> out, int channel) const {
   std::fill(out.begin(), out.end(), 0.0);
-  std::vector<float> all(static_cast<size_t>(angles_));
-  const Range range{0, angles_};
-  const double area = accumulate(polygon, std::span<const Range>(&range, 1), all.data());
+  const auto m = static_cast<size_t>(angles_);
+  std::vector<float> all(m);
+  const Range range{channel == 0 ? 0 : (channel - 1) * angles_, angles_};
+  const double area =
+      channel == 0
+          ? accumulate(sums_.data(), m, polygon, std::span<const Range>(&range, 1), all.data())
+          : accumulate(gradient_.data(), (kChannels - 1) * m, polygon,
+                       std::span<const Range>(&range, 1), all.data());
   for (size_t k = 0; k < which.size(); ++k) {
     const int a = which[k];
     out[k] = all[place_[static_cast<size_t>(a)]];
@@ -700,6 +822,10 @@ std::vector<TextureTables> TableCache::list() const {
   return out;
 }
 
+double tiltOf(const Planar& prim) {
+  return std::hypot(prim.tbn[2].c, prim.tbn[5].c) / std::abs(prim.tbn[8].c);
+}
+
 bool isFlatFace(const Planar& prim) {
   // The face's normal (frame column N, contact frame) along the patch's normal.
   return !prim.smooth && std::abs(prim.tbn[8].c) >= std::cos(kMaxTilt);
@@ -826,6 +952,11 @@ void planarMeans(const Footprint& footprint, const PlanarSurface& surface, Side 
     w0 = (ex * eb.y() - ey * eb.x()) * scale;
     w1 = (ea.x() * ey - ea.y() * ex) * scale;
   }
+  // The face's tilt: the contact normal in its frame is (tau, 1) / |(tau, 1)| up to sign (the
+  // same tau for A and B). Below kFlat the gradient's channels are not read.
+  const Vec2 tau = Vec2(face.tbn[2].c, face.tbn[5].c) / face.tbn[8].c;
+  constexpr double kFlat = 1e-7;
+  const bool tilted = tau.squaredNorm() > kFlat * kFlat;
   if (tables->group() != n) {
     // Tables laid out for another N (never from the cache, keyed by N): angle by angle.
     std::array<int, 2 * kMaxDirections> which{};
@@ -836,15 +967,20 @@ void planarMeans(const Footprint& footprint, const PlanarSurface& surface, Side 
       which[static_cast<size_t>(per * k)] = a;
       if (between) which[static_cast<size_t>(per * k + 1)] = (a + 1) % angles;
     }
-    std::array<double, 2 * kMaxDirections> sums{};
+    std::array<double, 2 * kMaxDirections> sums{}, grad_x{}, grad_y{};
     const auto used = static_cast<size_t>(per * n);
-    const double area = tables->integrate(std::span<const Vec2>(cells.data(), count),
-                                          std::span<const int>(which.data(), used),
-                                          std::span<double>(sums.data(), used));
+    const std::span<const Vec2> polygon(cells.data(), count);
+    const std::span<const int> angles_used(which.data(), used);
+    const double area = tables->integrate(polygon, angles_used, std::span<double>(sums.data(), used));
     if (!(area > 0.0)) return;
+    if (tilted) {
+      tables->integrate(polygon, angles_used, std::span<double>(grad_x.data(), used), 1);
+      tables->integrate(polygon, angles_used, std::span<double>(grad_y.data(), used), 2);
+      for (size_t k = 0; k < used; ++k) sums[k] += tau.x() * grad_x[k] + tau.y() * grad_y[k];
+    }
     for (size_t k = 0; k < static_cast<size_t>(n); ++k) {
       const double s = between ? w0 * sums[2 * k] + w1 * sums[2 * k + 1] : sums[k];
-      mean[k] = s / area;
+      mean[k] = std::max(0.0, s / area);
     }
     return;
   }
@@ -855,21 +991,30 @@ void planarMeans(const Footprint& footprint, const PlanarSurface& surface, Side 
   const int phase = m0 % phases, place = m0 / phases;
   const int dir = step > 0 ? 1 : -1;
   const int carry = phase == phases - 1 ? 1 : 0;
-  std::array<float, 2 * kMaxDirections> sums{};
+  std::array<float, 2 * kMaxDirections * CoefficientTables::kChannels> sums{};
   // One phase (N = angles) holds both angles of each pair: read once.
   const bool second = between && phases > 1;
   const double area = tables->integrateGroups(std::span<const Vec2>(cells.data(), count), phase,
-                                              second ? 2 : 1, sums.data());
+                                              second ? 2 : 1, tilted, sums.data());
   if (!(area > 0.0)) return;
+  // f at a tabulated angle, to first order in the tilt: f + tau . (its gradient).
+  const size_t block = static_cast<size_t>(second ? 2 * n : n);
+  auto at_angle = [&](int i) {
+    const auto k = static_cast<size_t>(i);
+    if (!tilted) return static_cast<double>(sums[k]);
+    return sums[k] + tau.x() * sums[block + k] + tau.y() * sums[2 * block + k];
+  };
   const double inv_area = 1.0 / area;
   int at = place;
   for (int k = 0; k < n; ++k) {
-    double s = sums[static_cast<size_t>(at)];
+    double s = at_angle(at);
     if (between) {
       const int next = at + carry == n ? 0 : at + carry;
-      s = w0 * s + w1 * sums[static_cast<size_t>(second ? n + next : next)];
+      s = w0 * s + w1 * at_angle(second ? n + next : next);
     }
-    mean[static_cast<size_t>(k)] = s * inv_area;
+    // A mean of max(0, .) is not negative: first order may take it below 0 at fragments
+    // tilted across the kink (within tiltError).
+    mean[static_cast<size_t>(k)] = std::max(0.0, s * inv_area);
     at += dir;
     at = at == n ? 0 : (at < 0 ? n - 1 : at);
   }

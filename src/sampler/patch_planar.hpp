@@ -17,8 +17,8 @@
 // footprint's boundary count with their mean density; (3) a direction between two tabulated
 // angles is interpolated with weights exact for every fragment whose g lies on the same side
 // of both (the cosine law), so only fragments within one angle step of the kink of max(0, .)
-// differ; (4) a face tilted against the contact plane by at most kMaxTilt is shaded as if
-// flat.
+// differ; (4) a face tilted against the contact plane by at most kMaxTilt is shaded to first
+// order in its tilt (the tables' gradient channels).
 #pragma once
 
 #include <array>
@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "asperity/geometry/surface.hpp"
+#include "asperity/math/simd_copy.hpp"
 #include "asperity/math/types.hpp"
 #include "asperity/sampler/friction_provider.hpp"
 #include "sampler/patch_raster.hpp"
@@ -41,9 +42,16 @@ class ThreadPool;
 
 namespace asperity::patch {
 
-// Largest tilt (rad) of a face against the contact plane that the planar path shades as flat:
-// the meso normals then turn by at most this, g by at most about (2 / pi) kMaxTilt (6e-4).
-inline constexpr double kMaxTilt = 1e-3;
+// Largest tilt (rad) of a face against the contact plane that the planar path takes. A tilt
+// shifts every fragment's g . e by about -(2 / pi) tau . e (tau the contact normal's slope in
+// the face's frame, |tau| = tan(tilt)); the tables hold each coefficient's gradient in tau,
+// so a tilted face is shaded to first order (docs/samplers.md bounds the rest).
+inline constexpr double kMaxTilt = 1e-2;
+// What first-order shading may miss at most, in mu (CoefficientTables::tiltError at the face's
+// tilt, times its gain), for a tilted face to take the planar path: below the raster path's own
+// sampling noise (per contact, median 0.5 to 2.5 % of mu_d, which is at least mu0, 0.2 in the
+// experiments).
+inline constexpr double kMaxTiltError = 1e-3;
 
 // Footprints with fewer pixel centres than this take the raster path: they are cheap to
 // rasterise, and there the tables' boundary cells weigh most.
@@ -66,15 +74,24 @@ TableLayout tableLayout(int width, int height, int directions);
 class CoefficientTables {
  public:
   // Builds the tables of `map` (and `mask`, null for none), rows in parallel on `pool` (null:
-  // this thread); the same bits for any thread count.
+  // this thread); the same bits for any thread count and either SIMD copy.
   CoefficientTables(const NormalMap& map, const GainMask* mask, float mu_max, TableLayout layout,
-                    const ThreadPool* pool);
+                    const ThreadPool* pool, SimdCopy copy = SimdCopy::Auto);
+
+  // Values per point of a row: f, and its gradient in the tilt (x, then y), each at every angle.
+  static constexpr size_t kChannels = 3;
 
   int angles() const { return angles_; }
+  // A bound on what shading a face tilted by kMaxTilt to first order misses, per fragment in
+  // the map's mean, at the worst angle: the mean over the map of max(0, |grad f| tan(kMaxTilt)
+  // - |f|) (a fragment errs only where the tilt can carry its f across the kink of max(0, f)).
+  // It grows at most linearly with the tilt. Large where many fragments lie at the kink: a
+  // sawtooth seen across its teeth, flat plateaus, smooth maps.
+  double tiltError() const { return tilt_error_; }
   // Angles per phase (see integrateGroups) and phases.
   int group() const { return group_; }
   int phases() const { return phases_; }
-  size_t bytes() const { return sums_.size() * sizeof(float); }
+  size_t bytes() const { return (sums_.size() + gradient_.size()) * sizeof(float); }
   // Tabulated angle a's direction, and the sine of the step between angles.
   const Vec2& unit(int a) const { return units_[static_cast<size_t>(a)]; }
   double sinStep() const { return sin_step_; }
@@ -82,28 +99,34 @@ class CoefficientTables {
   // The integrals over a convex polygon given in cell coordinates (x = (u W - 1/2) sub, y the
   // same along v), counter-clockwise or clockwise, at the tabulated angles `which` (indices in
   // [0, angles)), into out (same length). Returns the polygon's area in cells.
+  // `channel` 0 reads f, 1 and 2 its gradient in the tilt (see kChannels).
   double integrate(std::span<const Vec2> polygon, std::span<const int> which,
-                   std::span<double> out) const;
+                   std::span<double> out, int channel = 0) const;
 
   // The same for every angle of `count` (1 or 2) consecutive phases from `phase` (the last
   // phase is followed by phase 0): angle a is in phase a % phases at place a / phases; out
-  // holds count x group values, phase by phase. Returns the area in cells.
-  double integrateGroups(std::span<const Vec2> polygon, int phase, int count, float* out) const;
+  // holds count x group values, phase by phase; with `gradient`, then the same for the
+  // gradient's x and then its y channel. Returns the area in cells.
+  double integrateGroups(std::span<const Vec2> polygon, int phase, int count, bool gradient,
+                         float* out) const;
 
   // From texture coordinates (repeats) to the cell coordinates of integrate.
   Vec2 cellOf(double u, double v) const;
 
  private:
-  void buildRow(const NormalMap& map, const GainMask* mask, float mu_max, int row);
-  // The row sums over [begin, begin + len) of a point's values (at most 2 ranges), each times
-  // a strip's height, added to out (ranges' values one after the other).
+  void buildRow(const NormalMap& map, const GainMask* mask, float mu_max, SimdCopy copy, int row);
+  // The row sums over [begin, begin + len) of a point's values in `table` (per_point floats a
+  // point; at most 4 ranges), each times a strip's height, into out (ranges' values one after
+  // the other).
   struct Range {
     int begin = 0, len = 0;
   };
-  double accumulate(std::span<const Vec2> polygon, std::span<const Range> ranges,
-                    float* out) const;
+  double accumulate(const float* table, size_t per_point, std::span<const Vec2> polygon,
+                    std::span<const Range> ranges, float* out) const;
 
   int cols_ = 0, rows_ = 0, sub_ = 1, angles_ = 0, group_ = 1, phases_ = 1;
+  double tilt_error_ = 0.0;
+  std::vector<double> tilt_error_rows_;  // per row and angle, while building
   int map_width_ = 0, map_height_ = 0;
   double inv_cols_ = 1.0;
   std::vector<float> dx_, dy_;     // the tabulated e, as two arrays (the build's loop vectorises)
@@ -114,6 +137,9 @@ class CoefficientTables {
   // integral over [0, x) of the row, at [(row (cols + 1) + x) angles + place], x in
   // [0, cols]; place = (a % phases) group + a / phases (a phase's angles side by side).
   std::vector<float> sums_;
+  // The same running sums of f's gradient in the tilt: per point the angles' x components,
+  // then their y components, at the places of sums_.
+  std::vector<float> gradient_;
 };
 
 // Tables by texture identity, shared by every body whose surface uses the same map. get() builds
@@ -155,6 +181,9 @@ struct Footprint {
   int count = 0;
   int pixels = 0;
 };
+
+// |tau|: the tangent of a flat primitive's tilt against the contact plane (0 when it lies in it).
+double tiltOf(const Planar& prim);
 
 // Whether `prim` may stand for its surface in the planar path: flat-framed, tilted by at most
 // kMaxTilt. Secondary primitives must cover no pixel centre (coversNoCentre).

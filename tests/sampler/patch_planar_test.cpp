@@ -14,6 +14,7 @@
 #include "asperity/friction/fragment_model.hpp"
 #include "asperity/sampler/cpu_patch_sampler.hpp"
 #include "asperity/scene/scene.hpp"
+#include "asperity/texture/generators.hpp"
 #include "asperity/world/builders.hpp"
 #include "asperity/world/world.hpp"
 #include "support/test_support.hpp"
@@ -114,6 +115,29 @@ TEST(PlanarTables, DiamondsMatchTheirSplitCopies) {
   }
 }
 
+TEST(PlanarTables, BothSimdCopiesBuildTheSameBits) {
+  // The build's loop over angles has an AVX2 copy (math/simd.hpp); the tables (f and its tilt
+  // gradient) and the tilt error must not depend on which one ran.
+  GeneratorSpec spec;
+  spec.name = "concrete";
+  spec.size = 64;
+  const NormalMap map = generateNormalMap(spec);
+  const patch::TableLayout layout = patch::tableLayout(64, 64, 4);
+  const patch::CoefficientTables a(map, nullptr, 4.0f, layout, nullptr, SimdCopy::Auto);
+  const patch::CoefficientTables b(map, nullptr, 4.0f, layout, nullptr, SimdCopy::Baseline);
+  EXPECT_EQ(a.tiltError(), b.tiltError());
+  EXPECT_GT(a.tiltError(), 0.0);
+  const std::vector<Vec2> polygon = {{3.3, -7.1}, {41.9, 2.2}, {30.4, 29.7}, {-5.2, 12.5}};
+  std::vector<int> which(static_cast<size_t>(a.angles()));
+  for (int k = 0; k < a.angles(); ++k) which[static_cast<size_t>(k)] = k;
+  for (int channel = 0; channel < 3; ++channel) {
+    std::vector<double> x(which.size()), y(which.size());
+    a.integrate(polygon, which, x, channel);
+    b.integrate(polygon, which, y, channel);
+    EXPECT_EQ(x, y) << "channel " << channel;
+  }
+}
+
 TEST(PlanarTables, BudgetHoldsAndOversizedTexturesAreRasterised) {
   // 512 x 512 at N = 16: within 64 MB; 8192 x 8192 fits no layout (the raster path samples it).
   const patch::TableLayout layout = patch::tableLayout(512, 512, 16);
@@ -186,6 +210,94 @@ TEST(PlanarPath, UniformSlopeBoxOnPlaneMatchesTheRasterPath) {
         EXPECT_NEAR(a[i].mu.mu[static_cast<size_t>(k)], b[i].mu.mu[static_cast<size_t>(k)], 2e-5)
             << "yaw " << yaw << " contact " << i << " direction " << k;
     }
+  }
+}
+
+// The coefficients of one contact of `world` by `provider` after turning the box (body 1)
+// by `box_turn` about the contact point and the contact frame by `frame_turn`: each face is
+// then tilted against the contact plane.
+DirectionalMu tiltedContact(const World& world, const Quat& box_turn, const Quat& frame_turn,
+                            const std::string& provider, int& planar) {
+  std::vector<Body> bodies(world.bodies().begin(), world.bodies().end());
+  Contact c = world.contacts().front();
+  Body& box = bodies[1];
+  box.pose.position = c.point + box_turn * (box.pose.position - c.point);
+  box.pose.rotation = box_turn * box.pose.rotation;
+  c.normal = frame_turn * c.normal;
+  c.t = frame_turn * c.t;
+  c.b = frame_turn * c.b;
+  FrictionSettings settings = world.settings().friction;
+  settings.reuse_pixels = 0.0;
+  auto sampler = FrictionProviders::builtIn().make(provider);
+  sampler->computeCoefficients(bodies, std::span<Contact>(&c, 1), settings);
+  planar = sampler->lastPlanarCount();
+  return c.mu;
+}
+
+TEST(PlanarPath, UniformSlopeTiltedFacesMatchTheRasterPathToSecondOrder) {
+  // A face tilted against the contact plane turns every meso normal: for a uniform slope p,
+  // f = (2 / pi) (p . e - tau . e) / (1 + p . tau) exactly. Shaded as if flat, a tilt of 8.5e-3
+  // rad is off by up to (2 / pi) |tau| (1 + |p|^2), 6e-3 here; the tables' gradient leaves the
+  // second order, a few 1e-5. Both faces tilt, A and B each its own way (8.5e-3 and 4.3e-3 rad
+  // about axes at right angles: the box's face by 9.5e-3 against the contact plane).
+  // The slope points 56.25 degrees off the map's x: half a table step from every tabulated
+  // angle perpendicular to it (below: a map with one there is rasterised when tilted), and no
+  // direction the box or the plane reads lies within a table step of perpendicular to it,
+  // where the interpolation between angles is exact.
+  const float heading = static_cast<float>(56.25 * kPi / 180.0);
+  const auto map = uniformSlope(32, 0.4f * std::cos(heading), 0.4f * std::sin(heading));
+  auto world = boxOnPlane(map, 0.3, "cpu");
+  world->step();
+  ASSERT_FALSE(world->contacts().empty());
+  double worst_flat = 0.0;
+  for (const double tilt : {0.0, 0.002, 0.005, 0.0085}) {
+    for (const Vec3& axis : {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, -1, 0).normalized()}) {
+      const Quat box_turn(Eigen::AngleAxisd(tilt, axis));
+      const Quat frame_turn(Eigen::AngleAxisd(-0.5 * tilt, Vec3(axis.y(), axis.x(), 0)));
+      int planar = 0, raster = 0;
+      const DirectionalMu p = tiltedContact(*world, box_turn, frame_turn, "cpu_planar", planar);
+      const DirectionalMu r = tiltedContact(*world, box_turn, frame_turn, "cpu", raster);
+      ASSERT_EQ(planar, 1) << "tilt " << tilt;
+      for (int k = 0; k < r.count; ++k) {
+        const auto i = static_cast<size_t>(k);
+        EXPECT_NEAR(p.mu[i], r.mu[i], 5e-5) << "tilt " << tilt << " direction " << k;
+      }
+      if (tilt == 0.0085) {
+        // What the tilt changes, so that the bound above means something.
+        int unused = 0;
+        const DirectionalMu flat =
+            tiltedContact(*world, Quat::Identity(), Quat::Identity(), "cpu", unused);
+        for (int k = 0; k < r.count; ++k) {
+          const auto i = static_cast<size_t>(k);
+          worst_flat = std::max(worst_flat, static_cast<double>(std::abs(flat.mu[i] - r.mu[i])));
+        }
+      }
+    }
+  }
+  EXPECT_GT(worst_flat, 2e-3);
+}
+
+TEST(PlanarPath, TiltedFacesWhereFirstOrderMissesTooMuchAreRasterised) {
+  // A slope along the map's x: at the tabulated angles across it every fragment lies at the
+  // kink of max(0, f), where a tilt of |tau| adds (2 / pi) max(0, -tau . e) that no gradient
+  // gives. Its tilt error, (2 / pi) tan(kMaxTilt) at those angles, stops the planar path past
+  // about 1.6e-3 rad; a map with no fragment near the kink takes any tilt up to kMaxTilt.
+  const auto across = uniformSlope(32, 0.4f, 0.0f);
+  const float heading = static_cast<float>(56.25 * kPi / 180.0);
+  const auto off_axis = uniformSlope(32, 0.4f * std::cos(heading), 0.4f * std::sin(heading));
+  const patch::CoefficientTables kinked(*across, nullptr, kDefaultMuMax, patch::tableLayout(32, 32, 4), nullptr);
+  const patch::CoefficientTables clear(*off_axis, nullptr, kDefaultMuMax, patch::tableLayout(32, 32, 4), nullptr);
+  EXPECT_NEAR(kinked.tiltError(), 2.0 / kPi * std::tan(patch::kMaxTilt), 1e-6);
+  EXPECT_EQ(clear.tiltError(), 0.0);
+  auto world = boxOnPlane(across, 0.3, "cpu");
+  world->step();
+  ASSERT_FALSE(world->contacts().empty());
+  const Vec3 axis(1, 0, 0);
+  for (const double tilt : {0.0, 0.001, 0.003, 0.009}) {
+    int planar = 0;
+    tiltedContact(*world, Quat(Eigen::AngleAxisd(tilt, axis)), Quat::Identity(), "cpu_planar",
+                  planar);
+    EXPECT_EQ(planar, tilt < 1.5e-3 ? 1 : 0) << "tilt " << tilt;
   }
 }
 
@@ -275,18 +387,26 @@ void checkScene(const std::string& file) {
     worst_fine = std::max(worst_fine, std::abs(p - f) / f);
     raster_fine = std::max(raster_fine, std::abs(r - f) / f);
   }
+  int over = 0, beyond = 0;
+  for (size_t i = 0; i < c.planar_apart.size(); ++i) {
+    over += c.planar_apart[i] > 0.10;
+    beyond += c.planar_apart[i] > 0.10 && c.planar_fine[i] > c.noise[i];
+  }
   std::printf(
       "%s: %d planar contacts, |P| differs at %d. Mean mu_d per direction, worst direction: "
       "planar vs raster %.3f %%, planar vs raster at 4R %.3f %%, raster vs raster at 4R %.3f "
       "%%. Per contact, worst direction: planar vs raster median %.2f %%, 99 %% %.2f %%, max "
-      "%.2f %%; raster vs raster at 4R (its sampling noise) median %.2f %%, 99 %% %.2f %%\n",
+      "%.2f %% (%d over 10 %%, %d of them farther from 4R than the raster path); raster vs "
+      "raster at 4R (its sampling noise) median %.2f %%, 99 %% %.2f %%\n",
       file.c_str(), c.compared, c.pixels_differ, 100 * worst_mean, 100 * worst_fine,
       100 * raster_fine, 100 * quantile(c.planar_apart, 0.5), 100 * quantile(c.planar_apart, 0.99),
-      100 * quantile(c.planar_apart, 1.0), 100 * quantile(c.noise, 0.5),
+      100 * quantile(c.planar_apart, 1.0), over, beyond, 100 * quantile(c.noise, 0.5),
       100 * quantile(c.noise, 0.99));
-  // Each contact within 10 % of the raster path, the same pixels in P.
+  // Each contact within 10 % of the raster path, or nearer the raster path at 4R than the
+  // raster path is (small footprints, where the raster path's own noise exceeds 10 %: on
+  // sawtooth_plane, 64-pixel contacts whose raster path is 10 % from 4R); the same pixels in P.
   EXPECT_EQ(c.pixels_differ, 0) << file;
-  EXPECT_LE(quantile(c.planar_apart, 1.0), 0.10) << file;
+  EXPECT_EQ(beyond, 0) << file;
   // The means within 2 % of the raster path's, or, where the raster path at R itself strays
   // further from the footprint's mean (a sawtooth of two texels per pixel aliases), closer to
   // the raster path at 4R than R is, and within 1 % of it.
