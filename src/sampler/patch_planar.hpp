@@ -71,6 +71,24 @@ struct TableLayout {
 };
 TableLayout tableLayout(int width, int height, int directions);
 
+// Zeroed floats on 2 MiB pages where the system gives them (Linux: madvise): a contact's
+// strips read rows kilobytes apart, each a TLB miss on 4 KiB pages once the tables outgrow the
+// TLB's reach (a few MB).
+class TableMemory {
+ public:
+  void assign(size_t count);
+  float* data() { return data_.get(); }
+  const float* data() const { return data_.get(); }
+  size_t size() const { return size_; }
+
+ private:
+  struct Free {
+    void operator()(float* p) const;
+  };
+  std::unique_ptr<float[], Free> data_;
+  size_t size_ = 0;
+};
+
 class CoefficientTables {
  public:
   // Builds the tables of `map` (and `mask`, null for none), rows in parallel on `pool` (null:
@@ -136,10 +154,10 @@ class CoefficientTables {
   // Running sums along each row of cells (float: a row's values stay small): R(row, x) = the
   // integral over [0, x) of the row, at [(row (cols + 1) + x) angles + place], x in
   // [0, cols]; place = (a % phases) group + a / phases (a phase's angles side by side).
-  std::vector<float> sums_;
+  TableMemory sums_;
   // The same running sums of f's gradient in the tilt: per point the angles' x components,
   // then their y components, at the places of sums_.
-  std::vector<float> gradient_;
+  TableMemory gradient_;
 };
 
 // Tables by texture identity, shared by every body whose surface uses the same map. get() builds
