@@ -296,15 +296,18 @@ void TableMemory::assign(size_t count) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   madvise(p, bytes, MADV_HUGEPAGE);  // a hint: without it the tables are the same, slower
 #endif
-  std::memset(p, 0, bytes);
   data_.reset(static_cast<float*>(p));
   size_ = count;
 }
 
 size_t TableLayout::bytes(int width, int height) const {
-  const size_t rows = static_cast<size_t>(height) * static_cast<size_t>(sub);
-  const size_t points = static_cast<size_t>(width) * static_cast<size_t>(sub) + 1;
-  return rows * points * CoefficientTables::kChannels * static_cast<size_t>(angles) * sizeof(float);
+  const int cols = width * sub, rows = height * sub;
+  const int coarse = CoefficientTables::gradientCoarsening(cols, rows);
+  const auto m = static_cast<size_t>(angles);
+  const size_t f = static_cast<size_t>(rows) * static_cast<size_t>(cols + 1) * m;
+  const size_t gradient = static_cast<size_t>(rows / coarse) *
+                          static_cast<size_t>(cols / coarse + 1) * (CoefficientTables::kChannels - 1) * m;
+  return (f + gradient) * sizeof(float);
 }
 
 TableLayout tableLayout(int width, int height, int directions) {
@@ -350,18 +353,24 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
   place_.resize(static_cast<size_t>(angles_));
   for (int a = 0; a < angles_; ++a)
     place_[static_cast<size_t>(a)] = static_cast<size_t>((a % phases_) * group_ + a / phases_);
-  // f's sums, then the gradient's (x and y side by side per point): a flat face reads only the
-  // first, as dense as it was without the gradient.
-  const size_t f_floats = layout.bytes(map.width(), map.height()) / sizeof(float) / kChannels;
-  sums_.assign(f_floats);
-  gradient_.assign((kChannels - 1) * f_floats);
-  // Rows are independent: each thread writes its own running sums, in the same order of sums.
-  tilt_error_rows_.assign(static_cast<size_t>(rows_) * static_cast<size_t>(angles_), 0.0);
-  forEachOn(pool, static_cast<size_t>(rows_), 4,
-            [&](size_t row) { buildRow(map, mask, mu_max, copy, static_cast<int>(row)); });
+  // f's sums, and apart the gradient's on cells `coarse` times larger (x and y side by side per
+  // point): a flat face reads only the first, as dense as it was without the gradient.
+  const auto m = static_cast<size_t>(angles_);
+  coarse_ = gradientCoarsening(cols_, rows_);
+  gradient_grid_ = {nullptr, (kChannels - 1) * m, cols_ / coarse_, rows_ / coarse_};
+  sums_.assign(static_cast<size_t>(rows_) * static_cast<size_t>(cols_ + 1) * m);
+  gradient_.assign(static_cast<size_t>(gradient_grid_.rows) *
+                   static_cast<size_t>(gradient_grid_.cols + 1) * gradient_grid_.per_point);
+  f_grid_ = {sums_.data(), m, cols_, rows_};
+  gradient_grid_.table = gradient_.data();
+  // Rows of gradient cells are independent: each thread writes its own running sums (and
+  // those of f's rows within), in the same order of sums.
+  tilt_error_rows_.assign(static_cast<size_t>(rows_) * m, 0.0);
+  forEachOn(pool, static_cast<size_t>(gradient_grid_.rows), 2, [&](size_t row) {
+    buildRows(map, mask, mu_max, copy, static_cast<int>(row));
+  });
   // The mean over the map, rows added in order (the same bits for any thread count); the
   // largest over the angles.
-  const auto m = static_cast<size_t>(angles_);
   std::vector<double> error(m, 0.0);
   for (size_t row = 0; row < static_cast<size_t>(rows_); ++row)
     for (size_t a = 0; a < m; ++a) error[a] += tilt_error_rows_[row * m + a];
@@ -440,66 +449,84 @@ void addSample(bool avx2, float gx, float gy, const TiltGradient& t, float tan_m
 
 }  // namespace
 
-void CoefficientTables::buildRow(const NormalMap& map, const GainMask* mask, float mu_max,
-                                 SimdCopy copy, int row) {
+int CoefficientTables::gradientCoarsening(int cols, int rows) {
+  return cols % kGradientCoarsening == 0 && rows % kGradientCoarsening == 0 ? kGradientCoarsening
+                                                                            : 1;
+}
+
+void CoefficientTables::buildRows(const NormalMap& map, const GainMask* mask, float mu_max,
+                                  SimdCopy copy, int gradient_row) {
   const int q = kSamplesPerTexel / sub_;  // samples per cell along each axis
   const auto m = static_cast<size_t>(angles_);
   // A cell's sums in float (at most q x q = 16 samples) over the angles' two arrays: the loops
-  // over angles vectorise, where they dominate the build. Channel by channel: f, then its
-  // gradient's x and y (kChannels).
-  // The last channel: the first order's error bound at kMaxTilt (tiltError).
+  // over angles vectorise, where they dominate the build. Channel by channel: f, its
+  // gradient's x and y (kChannels), and the first order's error bound at kMaxTilt (tiltError).
   std::vector<float> cell((kChannels + 1) * m);
   const float* ce = cell.data() + kChannels * m;
-  std::vector<double> running(kChannels * m, 0.0);
+  // The gradient cells of this row: the sums of their fine cells' means.
+  const auto gradient_cols = static_cast<size_t>(gradient_grid_.cols);
+  std::vector<double> gradient_cells(gradient_cols * 2 * m, 0.0);
   const auto tan_max = static_cast<float>(std::tan(kMaxTilt));
   const bool avx2 = simd::avx2(copy);
-  double* row_error = tilt_error_rows_.data() + static_cast<size_t>(row) * m;
   const float* dx = dx_.data();
   const float* dy = dy_.data();
-  // Point x of the row holds the sums over cells [0, x) (point 0 stays 0).
-  const size_t points_before = static_cast<size_t>(row) * static_cast<size_t>(cols_ + 1);
-  float* line = sums_.data() + points_before * m;
-  float* gradient_line = gradient_.data() + points_before * (kChannels - 1) * m;
   const double inv_sub = 1.0 / sub_;
-  for (int c = 0; c < cols_; ++c) {
-    std::fill(cell.begin(), cell.end(), 0.0f);
-    for (int sy = 0; sy < q; ++sy) {
-      // Texel coordinate along v, texel centres at integers (x = v H - 1/2).
-      const double ty = (row + (sy + 0.5) / q) * inv_sub;
-      const int jy = static_cast<int>(std::floor(ty));
-      const float wy = static_cast<float>(ty - jy);
-      const Vec3f* r0 = &map.at(0, wrapTexel(jy, map_height_));
-      const Vec3f* r1 = &map.at(0, wrapTexel(jy + 1, map_height_));
-      for (int sx = 0; sx < q; ++sx) {
-        const double tx = (c + (sx + 0.5) / q) * inv_sub;
-        const int ix = static_cast<int>(std::floor(tx));
-        const float wx = static_cast<float>(tx - ix);
-        const int i0 = wrapTexel(ix, map_width_), i1 = wrapTexel(ix + 1, map_width_);
-        // The blend sampleNormal makes (unnormalised).
-        const Vec3f bottom = (1.0f - wx) * r0[i0] + wx * r0[i1];
-        const Vec3f top = (1.0f - wx) * r1[i0] + wx * r1[i1];
-        const Vec3f normal = (1.0f - wy) * bottom + wy * top;
-        float gain = 1.0f;
-        if (mask != nullptr) {
-          gain = sampleMask(*mask, static_cast<float>((tx + 0.5) / map_width_),
-                            static_cast<float>((ty + 0.5) / map_height_));
+  const double per_sample = 1.0 / (q * q);
+  for (int row = gradient_row * coarse_; row < (gradient_row + 1) * coarse_; ++row) {
+    double* row_error = tilt_error_rows_.data() + static_cast<size_t>(row) * m;
+    std::vector<double> running(m, 0.0);
+    // Point x of the row holds the sums over cells [0, x).
+    float* line = sums_.data() + static_cast<size_t>(row) * static_cast<size_t>(cols_ + 1) * m;
+    std::fill(line, line + m, 0.0f);
+    for (int c = 0; c < cols_; ++c) {
+      std::fill(cell.begin(), cell.end(), 0.0f);
+      for (int sy = 0; sy < q; ++sy) {
+        // Texel coordinate along v, texel centres at integers (x = v H - 1/2).
+        const double ty = (row + (sy + 0.5) / q) * inv_sub;
+        const int jy = static_cast<int>(std::floor(ty));
+        const float wy = static_cast<float>(ty - jy);
+        const Vec3f* r0 = &map.at(0, wrapTexel(jy, map_height_));
+        const Vec3f* r1 = &map.at(0, wrapTexel(jy + 1, map_height_));
+        for (int sx = 0; sx < q; ++sx) {
+          const double tx = (c + (sx + 0.5) / q) * inv_sub;
+          const int ix = static_cast<int>(std::floor(tx));
+          const float wx = static_cast<float>(tx - ix);
+          const int i0 = wrapTexel(ix, map_width_), i1 = wrapTexel(ix + 1, map_width_);
+          // The blend sampleNormal makes (unnormalised).
+          const Vec3f bottom = (1.0f - wx) * r0[i0] + wx * r0[i1];
+          const Vec3f top = (1.0f - wx) * r1[i0] + wx * r1[i1];
+          const Vec3f normal = (1.0f - wy) * bottom + wy * top;
+          float gain = 1.0f;
+          if (mask != nullptr) {
+            gain = sampleMask(*mask, static_cast<float>((tx + 0.5) / map_width_),
+                              static_cast<float>((ty + 0.5) / map_height_));
+          }
+          const Vec2f g = gain * ploughingVector(normal, Side::B, mu_max);
+          addSample(avx2, g.x(), g.y(), tiltGradientOf(normal, gain, mu_max), tan_max, dx, dy,
+                    m, cell.data());
         }
-        const Vec2f g = gain * ploughingVector(normal, Side::B, mu_max);
-        addSample(avx2, g.x(), g.y(), tiltGradientOf(normal, gain, mu_max), tan_max, dx, dy, m,
-                  cell.data());
       }
-    }
-    for (size_t a = 0; a < m; ++a) row_error[a] += ce[a];
-    for (size_t ch = 0; ch < kChannels; ++ch) {
-      // Channel 0 into sums_, 1 and 2 into gradient_ (each point's x values, then its y).
-      float* point = ch == 0 ? line + static_cast<size_t>(c + 1) * m
-                             : gradient_line + static_cast<size_t>(c + 1) * (kChannels - 1) * m +
-                                   (ch - 1) * m;
+      float* point = line + static_cast<size_t>(c + 1) * m;
+      double* gradient_cell = gradient_cells.data() + static_cast<size_t>(c / coarse_) * 2 * m;
       for (size_t a = 0; a < m; ++a) {
-        double& sum = running[ch * m + a];
-        sum += static_cast<double>(cell[ch * m + a]) / (q * q);
-        point[place_[a]] = static_cast<float>(sum);
+        running[a] += static_cast<double>(cell[a]) * per_sample;
+        point[place_[a]] = static_cast<float>(running[a]);
+        row_error[a] += ce[a];
       }
+      for (size_t k = 0; k < 2 * m; ++k) gradient_cell[k] += cell[m + k] * per_sample;
+    }
+  }
+  // The gradient's running sums of its cells' means (each the mean of coarse x coarse cells).
+  const double per_cell = 1.0 / (coarse_ * coarse_);
+  std::vector<double> running(2 * m, 0.0);
+  float* line = gradient_.data() + static_cast<size_t>(gradient_row) * (gradient_cols + 1) * 2 * m;
+  std::fill(line, line + 2 * m, 0.0f);
+  for (size_t c = 0; c < gradient_cols; ++c) {
+    float* point = line + (c + 1) * 2 * m;
+    for (size_t k = 0; k < 2 * m; ++k) {
+      running[k] += gradient_cells[c * 2 * m + k] * per_cell;
+      // x values, then y values, each at its angle's place.
+      point[(k / m) * m + place_[k % m]] = static_cast<float>(running[k]);
     }
   }
 }
@@ -562,9 +589,10 @@ void addStrips(const Strip* strips, size_t count, size_t stride, int begin, int 
 
 }  // namespace
 
-double CoefficientTables::accumulate(const float* table, size_t per_point,
-                                     std::span<const Vec2> polygon, std::span<const Range> ranges,
-                                     float* out) const {
+double CoefficientTables::accumulate(const Grid& grid, std::span<const Vec2> polygon,
+                                     std::span<const Range> ranges, float* out) const {
+  const int cols = grid.cols, rows = grid.rows;
+  const double inv_cols = 1.0 / cols;
   const size_t vertices = std::min<size_t>(polygon.size(), 32);
   size_t width = 0;
   for (const Range& r : ranges) width += static_cast<size_t>(r.len);
@@ -574,7 +602,7 @@ double CoefficientTables::accumulate(const float* table, size_t per_point,
   double xmin = polygon[0].x(), ymin = polygon[0].y();
   for (size_t k = 1; k < vertices; ++k)
     xmin = std::min(xmin, polygon[k].x()), ymin = std::min(ymin, polygon[k].y());
-  const Vec2 shift(cols_ * std::floor(xmin * inv_cols_), rows_ * std::floor(ymin / rows_));
+  const Vec2 shift(cols * std::floor(xmin * inv_cols), rows * std::floor(ymin / rows));
   // A strip's middle lies strictly between vertices, on one edge of each chain.
   const auto n = static_cast<int>(vertices);
   std::array<Vec2, 32> v;
@@ -588,13 +616,13 @@ double CoefficientTables::accumulate(const float* table, size_t per_point,
   Chains chains(v.data(), n);
   ymin = chains.ymin();
   const double ymax = chains.ymax();
-  const size_t m = per_point;
-  const size_t line = static_cast<size_t>(cols_ + 1) * m;
+  const size_t m = grid.per_point;
+  const size_t line = static_cast<size_t>(cols + 1) * m;
   auto endOf = [&](const float* row, double x) {
     // x < 2 cols nearly always (footprints far smaller than a repeat); any x is handled.
-    const double repeats = x < cols_ ? 0.0 : std::floor(x * inv_cols_);
-    const double rem = x - repeats * cols_;
-    const int c = std::clamp(static_cast<int>(rem), 0, cols_ - 1);
+    const double repeats = x < cols ? 0.0 : std::floor(x * inv_cols);
+    const double rem = x - repeats * cols;
+    const int c = std::clamp(static_cast<int>(rem), 0, cols - 1);
     return SpanEnd{row + static_cast<size_t>(c) * m, static_cast<float>(rem - c),
                    static_cast<float>(repeats)};
   };
@@ -634,10 +662,10 @@ double CoefficientTables::accumulate(const float* table, size_t per_point,
     }
   };
   const auto first = static_cast<long long>(std::floor(ymin));
-  int row_index = positiveMod(first, rows_);
+  int row_index = positiveMod(first, rows);
   for (long long r = first; static_cast<double>(r) < ymax; ++r) {
-    const float* row = table + static_cast<size_t>(row_index) * line;
-    row_index = row_index + 1 == rows_ ? 0 : row_index + 1;
+    const float* row = grid.table + static_cast<size_t>(row_index) * line;
+    row_index = row_index + 1 == rows ? 0 : row_index + 1;
     double y0 = std::max(static_cast<double>(r), ymin);
     const double row_end = std::min(static_cast<double>(r + 1), ymax);
     while (y0 < row_end) {
@@ -648,7 +676,7 @@ double CoefficientTables::accumulate(const float* table, size_t per_point,
       chains.span(0.5 * (y0 + y1), lo, hi);
       if (hi > lo) {
         Strip& st = strips[gathered++];
-        st = {endOf(row, lo), endOf(row, hi), row + static_cast<size_t>(cols_) * m,
+        st = {endOf(row, lo), endOf(row, hi), row + static_cast<size_t>(cols) * m,
               static_cast<float>(y1 - y0)};
         repeats = repeats || st.b.repeats != st.a.repeats;
         prefetch(st.a);
@@ -662,11 +690,18 @@ double CoefficientTables::accumulate(const float* table, size_t per_point,
   return 0.5 * std::abs(area);
 }
 
+std::span<const Vec2> CoefficientTables::onGradientCells(std::span<const Vec2> polygon,
+                                                          std::array<Vec2, 32>& scratch) const {
+  const size_t n = std::min(polygon.size(), scratch.size());
+  for (size_t k = 0; k < n; ++k) scratch[k] = polygon[k] / coarse_;
+  return {scratch.data(), n};
+}
+
 double CoefficientTables::integrateGroups(std::span<const Vec2> polygon, int phase, int count,
                                           bool gradient, float* out) const {
   const int first = phase % phases_;
   const int second = (first + 1) % phases_;
-  std::array<Range, 2 * kChannels> ranges{};
+  std::array<Range, 4> ranges{};
   size_t used = 1;
   if (count < 2) {
     ranges[0] = {first * group_, group_};
@@ -677,19 +712,21 @@ double CoefficientTables::integrateGroups(std::span<const Vec2> polygon, int pha
     ranges[1] = {second * group_, group_};
     used = 2;
   }
-  const auto m = static_cast<size_t>(angles_);
-  const double area =
-      accumulate(sums_.data(), m, polygon, std::span<const Range>(ranges.data(), used), out);
+  const double area = accumulate(f_grid_, polygon, std::span<const Range>(ranges.data(), used), out);
   if (gradient) {
-    // The same places in the gradient's x values and then in its y values.
-    const size_t per_channel = used;
-    for (size_t r = 0; r < per_channel; ++r) {
-      ranges[used++] = {ranges[r].begin + angles_, ranges[r].len};
-    }
+    // The same places in the gradient's x values and then in its y values, on its cells; an
+    // integral over them counts coarse^2 of f's cells each.
     size_t width = 0;
-    for (size_t r = 0; r < per_channel; ++r) width += static_cast<size_t>(ranges[r].len);
-    accumulate(gradient_.data(), (kChannels - 1) * m, polygon,
-               std::span<const Range>(ranges.data(), used), out + width);
+    for (size_t r = 0; r < used; ++r) {
+      width += static_cast<size_t>(ranges[r].len);
+      ranges[used + r] = {ranges[r].begin + angles_, ranges[r].len};
+    }
+    std::array<Vec2, 32> scratch;
+    float* g = out + width;
+    accumulate(gradient_grid_, onGradientCells(polygon, scratch),
+               std::span<const Range>(ranges.data(), 2 * used), g);
+    const auto cells = static_cast<float>(coarse_ * coarse_);
+    for (size_t k = 0; k < 2 * width; ++k) g[k] *= cells;
   }
   return area;
 }
@@ -697,14 +734,19 @@ double CoefficientTables::integrateGroups(std::span<const Vec2> polygon, int pha
 double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<const int> which,
                                     std::span<double> out, int channel) const {
   std::fill(out.begin(), out.end(), 0.0);
-  const auto m = static_cast<size_t>(angles_);
-  std::vector<float> all(m);
-  const Range range{channel == 0 ? 0 : (channel - 1) * angles_, angles_};
-  const double area =
-      channel == 0
-          ? accumulate(sums_.data(), m, polygon, std::span<const Range>(&range, 1), all.data())
-          : accumulate(gradient_.data(), (kChannels - 1) * m, polygon,
-                       std::span<const Range>(&range, 1), all.data());
+  std::vector<float> all(static_cast<size_t>(angles_));
+  double area = 0.0;
+  if (channel == 0) {
+    const Range range{0, angles_};
+    area = accumulate(f_grid_, polygon, std::span<const Range>(&range, 1), all.data());
+  } else {
+    const Range range{(channel - 1) * angles_, angles_};
+    std::array<Vec2, 32> scratch;
+    area = coarse_ * coarse_ *
+           accumulate(gradient_grid_, onGradientCells(polygon, scratch),
+                      std::span<const Range>(&range, 1), all.data());
+    for (float& v : all) v *= static_cast<float>(coarse_ * coarse_);
+  }
   for (size_t k = 0; k < which.size(); ++k) {
     const int a = which[k];
     out[k] = all[place_[static_cast<size_t>(a)]];

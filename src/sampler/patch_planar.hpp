@@ -71,12 +71,12 @@ struct TableLayout {
 };
 TableLayout tableLayout(int width, int height, int directions);
 
-// Zeroed floats on 2 MiB pages where the system gives them (Linux: madvise): a contact's
+// Floats (not set) on 2 MiB pages where the system gives them (Linux: madvise): a contact's
 // strips read rows kilobytes apart, each a TLB miss on 4 KiB pages once the tables outgrow the
 // TLB's reach (a few MB).
 class TableMemory {
  public:
-  void assign(size_t count);
+  void assign(size_t count);  // count floats, their values unset
   float* data() { return data_.get(); }
   const float* data() const { return data_.get(); }
   size_t size() const { return size_; }
@@ -98,6 +98,12 @@ class CoefficientTables {
 
   // Values per point of a row: f, and its gradient in the tilt (x, then y), each at every angle.
   static constexpr size_t kChannels = 3;
+  // The gradient's cells are this many of f's cells along each axis (where the rows and columns
+  // divide): it enters times the tilt's tangent, at most 0.01, so coarser cells at its
+  // footprint's edge (error (2)) weigh a hundredth as much; it then takes a quarter of the
+  // memory and of the rows a contact reads.
+  static constexpr int kGradientCoarsening = 2;
+  static int gradientCoarsening(int cols, int rows);
 
   int angles() const { return angles_; }
   // A bound on what shading a face tilted by kMaxTilt to first order misses, per fragment in
@@ -124,7 +130,7 @@ class CoefficientTables {
   // The same for every angle of `count` (1 or 2) consecutive phases from `phase` (the last
   // phase is followed by phase 0): angle a is in phase a % phases at place a / phases; out
   // holds count x group values, phase by phase; with `gradient`, then the same for the
-  // gradient's x and then its y channel. Returns the area in cells.
+  // gradient's x and then its y channel (integrals in f's cells too). Returns the area in cells.
   double integrateGroups(std::span<const Vec2> polygon, int phase, int count, bool gradient,
                          float* out) const;
 
@@ -132,15 +138,26 @@ class CoefficientTables {
   Vec2 cellOf(double u, double v) const;
 
  private:
-  void buildRow(const NormalMap& map, const GainMask* mask, float mu_max, SimdCopy copy, int row);
+  // The rows of f's cells within one row of gradient cells, and that row.
+  void buildRows(const NormalMap& map, const GainMask* mask, float mu_max, SimdCopy copy,
+                 int gradient_row);
   // The row sums over [begin, begin + len) of a point's values in `table` (per_point floats a
   // point; at most 4 ranges), each times a strip's height, into out (ranges' values one after
   // the other).
   struct Range {
     int begin = 0, len = 0;
   };
-  double accumulate(const float* table, size_t per_point, std::span<const Vec2> polygon,
+  // A table of running sums: per_point floats a point, cols + 1 points a row.
+  struct Grid {
+    const float* table = nullptr;
+    size_t per_point = 0;
+    int cols = 0, rows = 0;
+  };
+  double accumulate(const Grid& grid, std::span<const Vec2> polygon,
                     std::span<const Range> ranges, float* out) const;
+  // A polygon in f's cells on the gradient's (at most 32 vertices, into scratch).
+  std::span<const Vec2> onGradientCells(std::span<const Vec2> polygon,
+                                        std::array<Vec2, 32>& scratch) const;
 
   int cols_ = 0, rows_ = 0, sub_ = 1, angles_ = 0, group_ = 1, phases_ = 1;
   double tilt_error_ = 0.0;
@@ -155,9 +172,11 @@ class CoefficientTables {
   // integral over [0, x) of the row, at [(row (cols + 1) + x) angles + place], x in
   // [0, cols]; place = (a % phases) group + a / phases (a phase's angles side by side).
   TableMemory sums_;
-  // The same running sums of f's gradient in the tilt: per point the angles' x components,
-  // then their y components, at the places of sums_.
+  // The same running sums of f's gradient in the tilt over cells coarse_ times larger: per
+  // point the angles' x components, then their y components, at the places of sums_.
   TableMemory gradient_;
+  int coarse_ = 1;  // gradientCoarsening
+  Grid f_grid_, gradient_grid_;
 };
 
 // Tables by texture identity, shared by every body whose surface uses the same map. get() builds
