@@ -30,17 +30,8 @@ bool sameSettings(const FrictionSettings& x, const FrictionSettings& y) {
          x.reuse_pixels == y.reuse_pixels;
 }
 
-// World to a body's frame, as a matrix: a contact's four vectors are moved by one rotation
-// made once, cheaper than four quaternion products.
-struct ToBody {
-  Mat3 rotation;
-  Vec3 origin;
-  explicit ToBody(const Body& body)
-      : rotation(body.pose.rotation.conjugate().toRotationMatrix()), origin(body.pose.position) {}
-  Vec3 point(const Vec3& world) const { return rotation * (world - origin); }
-};
-
 // The contact point and its points w/2 along t and b, in a body's frame.
+template <typename ToBody>
 std::array<Vec3, 3> framePoints(const ToBody& body, const Contact& c, double half_width) {
   return {body.point(c.point), body.point(c.point + half_width * c.t),
           body.point(c.point + half_width * c.b)};
@@ -55,9 +46,9 @@ struct Motion {
   double along = 0.0, depth = 0.0, tilt = 0.0, rise_least = 0.0, rise_most = 0.0;
 };
 
-Motion motionOf(const Body& body, const Contact& c, const std::array<Vec3, 3>& then,
+template <typename ToBody>
+Motion motionOf(const ToBody& to_body, const Contact& c, const std::array<Vec3, 3>& then,
                 double half_width) {
-  const ToBody to_body(body);
   const std::array<Vec3, 3> now = framePoints(to_body, c, half_width);
   const Vec3 n = to_body.rotation * c.normal;
   std::array<double, 3> d{};
@@ -135,12 +126,26 @@ size_t PatchReuse::find(const std::vector<Key>& keys, const Key& key, size_t& cu
   return cursor++;
 }
 
+const PatchReuse::ToBody& PatchReuse::toBody(std::span<const Body> bodies, BodyId id) {
+  if (to_body_.size() < bodies.size()) {
+    to_body_.resize(bodies.size());
+    to_body_stamp_.resize(bodies.size(), 0);
+  }
+  ToBody& t = to_body_[id];
+  if (to_body_stamp_[id] != call_) {
+    const Body& body = bodies[id];
+    t = {body.pose.rotation.conjugate().toRotationMatrix(), body.pose.position};
+    to_body_stamp_[id] = call_;
+  }
+  return t;
+}
+
 PatchReuse::Sample PatchReuse::record(std::span<const Body> bodies, const Contact& c,
-                                      const std::array<DepthMargins, 2>& depth) const {
+                                      const std::array<DepthMargins, 2>& depth) {
   const double half = 0.5 * settings_.patch_width;
   Sample s;
-  s.on_a = framePoints(ToBody(bodies[c.body_a]), c, half);
-  s.on_b = framePoints(ToBody(bodies[c.body_b]), c, half);
+  s.on_a = framePoints(toBody(bodies, c.body_a), c, half);
+  s.on_b = framePoints(toBody(bodies, c.body_b), c, half);
   s.phi = c.phi;
   s.depth = {lessRounding(depth[0], settings_.patch_width),
              lessRounding(depth[1], settings_.patch_width)};
@@ -154,9 +159,12 @@ void PatchReuse::reuse(std::span<const Body> bodies, std::span<Contact> contacts
                        const FrictionSettings& settings, std::vector<uint8_t>& reused) {
   reused.assign(contacts.size(), 0);
   margins_.assign(contacts.size(), {});
+  ++call_;  // the bodies may have moved since the last call
   if (!sameSettings(settings, settings_)) {
     keys_.clear();
-    samples_.clear();
+    slot_of_.clear();
+    slots_.clear();
+    free_slots_.clear();
   }
   settings_ = settings;
   tolerance_ = settings.reuse_pixels * settings.patch_width / settings.patch_resolution;
@@ -169,10 +177,10 @@ void PatchReuse::reuse(std::span<const Body> bodies, std::span<Contact> contacts
     Contact& c = contacts[i];
     const size_t found = find(keys_, keyOf(c), cursor);
     if (found == kNone) continue;
-    const Sample& s = samples_[found];
+    const Sample& s = slots_[slot_of_[found]];
     if (s.covered_pixels < kFewestPixelsToKeep) continue;
-    Motion a = motionOf(bodies[c.body_a], c, s.on_a, half);
-    Motion b = motionOf(bodies[c.body_b], c, s.on_b, half);
+    Motion a = motionOf(toBody(bodies, c.body_a), c, s.on_a, half);
+    Motion b = motionOf(toBody(bodies, c.body_b), c, s.on_b, half);
     if (!holds(a, b, s.phi, c.phi, s.depth, tol)) {
       if (s.covered_pixels < kFewestPixelsToSlide) continue;
       if (alikeEverywhere(bodies[c.body_a], c.shape_a)) a.along = 0.0;
@@ -189,10 +197,14 @@ void PatchReuse::reuse(std::span<const Body> bodies, std::span<Contact> contacts
 void PatchReuse::remember(std::span<const Body> bodies, std::span<const Contact> contacts,
                           std::span<const uint8_t> reused) {
   keys_.swap(next_keys_);
-  samples_.swap(next_samples_);
+  slot_of_.swap(next_slot_of_);
   keys_.clear();
-  samples_.clear();
-  if (!(tolerance_ > 0.0)) return;
+  slot_of_.clear();
+  if (!(tolerance_ > 0.0)) {
+    slots_.clear();
+    free_slots_.clear();
+    return;
+  }
   // By key, then contact order: of two contacts with one identity the first is kept. The
   // contacts are nearly always in key order already (the collision stage sorts them by bodies
   // and key): then they are taken as they come.
@@ -200,15 +212,32 @@ void PatchReuse::remember(std::span<const Body> bodies, std::span<const Contact>
   for (size_t i = 0; i < contacts.size(); ++i)
     order_.emplace_back(keyOf(contacts[i]), static_cast<uint32_t>(i));
   if (!std::is_sorted(order_.begin(), order_.end())) std::sort(order_.begin(), order_.end());
+  // The last step's keys and slots are in next_ now. A kept sample stays in its slot; a contact
+  // sampled afresh takes its identity's old slot, else a free one; the slots of identities gone
+  // are freed after.
+  slot_used_.assign(slots_.size(), 0);
   size_t cursor = 0;
   for (const auto& [key, i] : order_) {
     if (!keys_.empty() && keys_.back() == key) continue;
-    // The last step's records are in next_ now; a reused contact keeps its original one.
-    const size_t old = reused[i] ? find(next_keys_, key, cursor) : kNone;
+    const size_t old = find(next_keys_, key, cursor);
+    uint32_t slot = 0;
+    if (old != kNone) {
+      slot = next_slot_of_[old];
+    } else if (!free_slots_.empty()) {
+      slot = free_slots_.back();
+      free_slots_.pop_back();
+    } else {
+      slot = static_cast<uint32_t>(slots_.size());
+      slots_.emplace_back();
+      slot_used_.push_back(0);
+    }
+    if (!reused[i]) slots_[slot] = record(bodies, contacts[i], margins_[i]);
+    slot_used_[slot] = 1;
     keys_.push_back(key);
-    samples_.push_back(old != kNone ? next_samples_[old]
-                                    : record(bodies, contacts[i], margins_[i]));
+    slot_of_.push_back(slot);
   }
+  for (const uint32_t slot : next_slot_of_)
+    if (!slot_used_[slot]) free_slots_.push_back(slot);
 }
 
 void PatchReuse::save(StateWriter& out) const {
@@ -219,7 +248,7 @@ void PatchReuse::save(StateWriter& out) const {
     const auto& [a, b, shape_a, shape_b, key] = keys_[i];
     out.put(a), out.put(b), out.put(shape_a), out.put(shape_b), out.put(key);
     // A sample is numbers only (points, depths, coefficients, counts): its bytes as they are.
-    out.putBytes(&samples_[i], sizeof(Sample));
+    out.putBytes(&slots_[slot_of_[i]], sizeof(Sample));
   }
 }
 
@@ -228,18 +257,21 @@ void PatchReuse::load(StateReader& in) {
   tolerance_ = in.get<double>();
   const size_t count = in.count(sizeof(Sample));
   keys_.resize(count);
-  samples_.resize(count);
+  slots_.resize(count);
+  slot_of_.resize(count);
+  free_slots_.clear();
   for (size_t i = 0; i < count; ++i) {
+    slot_of_[i] = static_cast<uint32_t>(i);
     auto& [a, b, shape_a, shape_b, key] = keys_[i];
     a = in.get<BodyId>(), b = in.get<BodyId>();
     shape_a = in.get<int>(), shape_b = in.get<int>();
     key = in.get<uint64_t>();
-    in.getBytes(static_cast<void*>(&samples_[i]), sizeof(Sample));
+    in.getBytes(static_cast<void*>(&slots_[i]), sizeof(Sample));
     // A kept sample's coefficients are copied into contacts as they are: their count must be
     // one a contact can hold.
-    if (samples_[i].mu.count < 0 || samples_[i].mu.count > kMaxDirections)
+    if (slots_[i].mu.count < 0 || slots_[i].mu.count > kMaxDirections)
       throw Error("the state's kept patch sample " + std::to_string(i) + " has " +
-                  std::to_string(samples_[i].mu.count) + " directions");
+                  std::to_string(slots_[i].mu.count) + " directions");
   }
 }
 

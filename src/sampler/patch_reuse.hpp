@@ -57,21 +57,38 @@ class PatchReuse {
     int covered_pixels = 0;
     bool fallback = false;
   };
+  // World to a body's frame, as a matrix: a contact's points are moved by one rotation made
+  // once per body and call, cheaper than quaternion products per point.
+  struct ToBody {
+    Mat3 rotation;
+    Vec3 origin;
+    Vec3 point(const Vec3& world) const { return rotation * (world - origin); }
+  };
   static Key keyOf(const Contact& c);
+  // Body `id`'s ToBody in this call (made on first use; bodies do not move within a call).
+  const ToBody& toBody(std::span<const Body> bodies, BodyId id);
   Sample record(std::span<const Body> bodies, const Contact& c,
-                const std::array<DepthMargins, 2>& depth) const;
+                const std::array<DepthMargins, 2>& depth);
   // The index of `key` in sorted `keys` (kNone when absent), starting the search where
   // `cursor` stands and leaving it after the entry found.
   static constexpr size_t kNone = ~size_t{0};
   static size_t find(const std::vector<Key>& keys, const Key& key, size_t& cursor);
 
-  // keys_[i] is samples_[i]'s identity, sorted; the keys are apart from the (large) samples so
-  // that a lookup touches few cache lines. The next_ buffers are swapped in each step and the
-  // sort moves only (key, contact index) pairs, so that a warm sampler does not allocate.
+  // keys_[i] is the identity of the sample in slots_[slot_of_[i]], sorted; the keys are apart
+  // from the (large) samples so that a lookup touches few cache lines, and a kept sample stays
+  // in its slot from step to step (only its key and slot index move). The next_ buffers are
+  // swapped in each step and the sort moves only (key, contact index) pairs, so that a warm
+  // sampler does not allocate.
   std::vector<Key> keys_, next_keys_;
-  std::vector<Sample> samples_, next_samples_;
+  std::vector<uint32_t> slot_of_, next_slot_of_;
+  std::vector<Sample> slots_;
+  std::vector<uint32_t> free_slots_;
+  std::vector<uint8_t> slot_used_;
   std::vector<std::pair<Key, uint32_t>> order_;
   std::vector<std::array<DepthMargins, 2>> margins_;  // this call's, per contact
+  std::vector<ToBody> to_body_;                       // per body, valid where stamped
+  std::vector<uint64_t> to_body_stamp_;
+  uint64_t call_ = 0;
   FrictionSettings settings_;                         // those the samples were taken with
   double tolerance_ = 0.0;                            // m: reuse_pixels patch pixels
 };
