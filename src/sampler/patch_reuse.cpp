@@ -53,12 +53,14 @@ Motion motionOf(const ToBody& to_body, const Contact& c, const std::array<Vec3, 
   const Vec3 n = to_body.rotation * c.normal;
   std::array<double, 3> d{};
   Motion m;
+  double along_squared = 0.0;  // one root for the largest (the root keeps the order)
   for (size_t i = 0; i < 3; ++i) {
     const Vec3 delta = now[i] - then[i];
     d[i] = delta.dot(n);
-    m.along = std::max((delta - d[i] * n).norm(), m.along);
+    along_squared = std::max((delta - d[i] * n).squaredNorm(), along_squared);
     m.depth = std::max(std::abs(d[i]), m.depth);
   }
+  m.along = std::sqrt(along_squared);
   // The frame point moved by d along n on the body: the body's surface by -d in the frame.
   m.tilt = std::max(std::abs(d[1] - d[0]), std::abs(d[2] - d[0]));
   const double spread = std::abs(d[1] - d[0]) + std::abs(d[2] - d[0]);
@@ -187,7 +189,9 @@ void PatchReuse::reuse(std::span<const Body> bodies, std::span<Contact> contacts
       if (alikeEverywhere(bodies[c.body_b], c.shape_b)) b.along = 0.0;
       if (!holds(a, b, s.phi, c.phi, s.depth, tol)) continue;
     }
-    c.mu = s.mu;
+    // The directions in use only (the rest stay as the contact has them: 0).
+    c.mu.count = s.mu.count;
+    std::copy_n(s.mu.mu.begin(), s.mu.count, c.mu.mu.begin());
     c.covered_pixels = s.covered_pixels;
     c.fallback = s.fallback;
     reused[i] = 1;
