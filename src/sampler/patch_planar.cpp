@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-
 #include <functional>
 #include <limits>
 #include <mutex>
@@ -109,8 +108,7 @@ HalfPlanes halfPlanesOf(const Volume& volume, const Planar& prim) {
 
 // The same test the raster path makes at a pixel centre: the face's edges (top-left rule) and
 // the depth clip.
-bool keepsCentre(const Volume& volume, const Planar& prim, double x, double y,
-                 bool depth = true) {
+bool keepsCentre(const Volume& volume, const Planar& prim, double x, double y, bool depth = true) {
   for (int k = 0; k < prim.edge_count; ++k) {
     if (!prim.edges[static_cast<size_t>(k)].inside(x, y)) return false;
   }
@@ -306,7 +304,8 @@ size_t TableLayout::bytes(int width, int height) const {
   const auto m = static_cast<size_t>(angles);
   const size_t f = static_cast<size_t>(rows) * static_cast<size_t>(cols + 1) * m;
   const size_t gradient = static_cast<size_t>(rows / coarse) *
-                          static_cast<size_t>(cols / coarse + 1) * (CoefficientTables::kChannels - 1) * m;
+                          static_cast<size_t>(cols / coarse + 1) *
+                          (CoefficientTables::kChannels - 1) * m;
   return (f + gradient) * sizeof(float);
 }
 
@@ -332,8 +331,7 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
       sub_(layout.sub),
       angles_(layout.angles),
       map_width_(map.width()),
-      map_height_(map.height()),
-      inv_cols_(1.0 / (map.width() * layout.sub)) {
+      map_height_(map.height()) {
   if (map.empty() || angles_ <= 0 || sub_ <= 0 || kSamplesPerTexel % sub_ != 0) {
     throw Error("planar tables: empty map or bad layout (sub " + std::to_string(sub_) +
                 ", angles " + std::to_string(angles_) + ")");
@@ -366,16 +364,15 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
   // Rows of gradient cells are independent: each thread writes its own running sums (and
   // those of f's rows within), in the same order of sums.
   tilt_error_rows_.assign(static_cast<size_t>(rows_) * m, 0.0);
-  forEachOn(pool, static_cast<size_t>(gradient_grid_.rows), 2, [&](size_t row) {
-    buildRows(map, mask, mu_max, copy, static_cast<int>(row));
-  });
+  forEachOn(pool, static_cast<size_t>(gradient_grid_.rows), 2,
+            [&](size_t row) { buildRows(map, mask, mu_max, copy, static_cast<int>(row)); });
   // The mean over the map, rows added in order (the same bits for any thread count); the
   // largest over the angles.
   std::vector<double> error(m, 0.0);
   for (size_t row = 0; row < static_cast<size_t>(rows_); ++row)
     for (size_t a = 0; a < m; ++a) error[a] += tilt_error_rows_[row * m + a];
-  const double samples = static_cast<double>(rows_) * cols_ * (kSamplesPerTexel / sub_) *
-                         (kSamplesPerTexel / sub_);
+  const double samples =
+      static_cast<double>(rows_) * cols_ * (kSamplesPerTexel / sub_) * (kSamplesPerTexel / sub_);
   tilt_error_ = *std::max_element(error.begin(), error.end()) / samples;
   tilt_error_rows_ = {};
 }
@@ -438,8 +435,8 @@ ASPERITY_TARGET_AVX2 void addSampleAvx2(float gx, float gy, const TiltGradient& 
 }
 #endif
 
-void addSample(bool avx2, float gx, float gy, const TiltGradient& t, float tan_max,
-               const float* dx, const float* dy, size_t m, float* cell) {
+void addSample(bool avx2, float gx, float gy, const TiltGradient& t, float tan_max, const float* dx,
+               const float* dy, size_t m, float* cell) {
 #if ASPERITY_AVX2_COPIES
   if (avx2) return addSampleAvx2(gx, gy, t, tan_max, dx, dy, m, cell);
 #endif
@@ -502,8 +499,8 @@ void CoefficientTables::buildRows(const NormalMap& map, const GainMask* mask, fl
                               static_cast<float>((ty + 0.5) / map_height_));
           }
           const Vec2f g = gain * ploughingVector(normal, Side::B, mu_max);
-          addSample(avx2, g.x(), g.y(), tiltGradientOf(normal, gain, mu_max), tan_max, dx, dy,
-                    m, cell.data());
+          addSample(avx2, g.x(), g.y(), tiltGradientOf(normal, gain, mu_max), tan_max, dx, dy, m,
+                    cell.data());
         }
       }
       float* point = line + static_cast<size_t>(c + 1) * m;
@@ -569,11 +566,16 @@ void addStrips(const Strip* strips, size_t count, size_t stride, int begin, floa
 
 void addStrips(const Strip* strips, size_t count, size_t stride, int begin, int len, float* out) {
   switch (len) {
-    case 4: return addStrips<4>(strips, count, stride, begin, out);
-    case 8: return addStrips<8>(strips, count, stride, begin, out);
-    case 16: return addStrips<16>(strips, count, stride, begin, out);
-    case 32: return addStrips<32>(strips, count, stride, begin, out);
-    default: break;
+    case 4:
+      return addStrips<4>(strips, count, stride, begin, out);
+    case 8:
+      return addStrips<8>(strips, count, stride, begin, out);
+    case 16:
+      return addStrips<16>(strips, count, stride, begin, out);
+    case 32:
+      return addStrips<32>(strips, count, stride, begin, out);
+    default:
+      break;
   }
   for (size_t s = 0; s < count; ++s) {
     const Strip& st = strips[s];
@@ -691,7 +693,7 @@ double CoefficientTables::accumulate(const Grid& grid, std::span<const Vec2> pol
 }
 
 std::span<const Vec2> CoefficientTables::onGradientCells(std::span<const Vec2> polygon,
-                                                          std::array<Vec2, 32>& scratch) const {
+                                                         std::array<Vec2, 32>& scratch) const {
   const size_t n = std::min(polygon.size(), scratch.size());
   for (size_t k = 0; k < n; ++k) scratch[k] = polygon[k] / coarse_;
   return {scratch.data(), n};
@@ -712,7 +714,8 @@ double CoefficientTables::integrateGroups(std::span<const Vec2> polygon, int pha
     ranges[1] = {second * group_, group_};
     used = 2;
   }
-  const double area = accumulate(f_grid_, polygon, std::span<const Range>(ranges.data(), used), out);
+  const double area =
+      accumulate(f_grid_, polygon, std::span<const Range>(ranges.data(), used), out);
   if (gradient) {
     // The same places in the gradient's x values and then in its y values, on its cells; an
     // integral over them counts coarse^2 of f's cells each.
@@ -787,9 +790,11 @@ class SharedTables {
         return e.tables;
       }
     }
-    Entry entry{hash, map, mask, mu_max, directions,
-                std::make_shared<CoefficientTables>(*map, mask.get(), mu_max, layout, pool),
-                clock_};
+    Entry entry{
+        hash,       map,
+        mask,       mu_max,
+        directions, std::make_shared<CoefficientTables>(*map, mask.get(), mu_max, layout, pool),
+        clock_};
     entries_.push_back(entry);
     forgetUnused();
     return entry.tables;
@@ -824,7 +829,7 @@ class SharedTables {
       h ^= std::hash<std::string_view>{}(
                bytesOf(mask->values.data(), mask->values.size() * sizeof(float))) *
            31;
-    return h ^ (std::hash<float>{}(mu_max) * 7) ^ (static_cast<size_t>(directions) << 1);
+    return h ^ (std::hash<float>{}(mu_max)*7) ^ (static_cast<size_t>(directions) << 1);
   }
   static bool sameMap(const NormalMap& a, const NormalMap& b) {
     return &a == &b || (a.width() == b.width() && a.height() == b.height() &&
@@ -1036,7 +1041,8 @@ void planarMeans(const Footprint& footprint, const PlanarSurface& surface, Side 
     const auto used = static_cast<size_t>(per * n);
     const std::span<const Vec2> polygon(cells.data(), count);
     const std::span<const int> angles_used(which.data(), used);
-    const double area = tables->integrate(polygon, angles_used, std::span<double>(sums.data(), used));
+    const double area =
+        tables->integrate(polygon, angles_used, std::span<double>(sums.data(), used));
     if (!(area > 0.0)) return;
     if (tilted) {
       tables->integrate(polygon, angles_used, std::span<double>(grad_x.data(), used), 1);

@@ -124,8 +124,8 @@ class CoefficientTables {
   // same along v), counter-clockwise or clockwise, at the tabulated angles `which` (indices in
   // [0, angles)), into out (same length). Returns the polygon's area in cells.
   // `channel` 0 reads f, 1 and 2 its gradient in the tilt (see kChannels).
-  double integrate(std::span<const Vec2> polygon, std::span<const int> which,
-                   std::span<double> out, int channel = 0) const;
+  double integrate(std::span<const Vec2> polygon, std::span<const int> which, std::span<double> out,
+                   int channel = 0) const;
 
   // The same for every angle of `count` (1 or 2) consecutive phases from `phase` (the last
   // phase is followed by phase 0): angle a is in phase a % phases at place a / phases; out
@@ -153,8 +153,8 @@ class CoefficientTables {
     size_t per_point = 0;
     int cols = 0, rows = 0;
   };
-  double accumulate(const Grid& grid, std::span<const Vec2> polygon,
-                    std::span<const Range> ranges, float* out) const;
+  double accumulate(const Grid& grid, std::span<const Vec2> polygon, std::span<const Range> ranges,
+                    float* out) const;
   // A polygon in f's cells on the gradient's (at most 32 vertices, into scratch).
   std::span<const Vec2> onGradientCells(std::span<const Vec2> polygon,
                                         std::array<Vec2, 32>& scratch) const;
@@ -163,10 +163,9 @@ class CoefficientTables {
   double tilt_error_ = 0.0;
   std::vector<double> tilt_error_rows_;  // per row and angle, while building
   int map_width_ = 0, map_height_ = 0;
-  double inv_cols_ = 1.0;
-  std::vector<float> dx_, dy_;     // the tabulated e, as two arrays (the build's loop vectorises)
-  std::vector<size_t> place_;      // where angle a lies among a point's values (see sums_)
-  std::vector<Vec2> units_;        // the same in double
+  std::vector<float> dx_, dy_;  // the tabulated e, as two arrays (the build's loop vectorises)
+  std::vector<size_t> place_;   // where angle a lies among a point's values (see sums_)
+  std::vector<Vec2> units_;     // the same in double
   double sin_step_ = 0.0;
   // Running sums along each row of cells (float: a row's values stay small): R(row, x) = the
   // integral over [0, x) of the row, at [(row (cols + 1) + x) angles + place], x in
@@ -199,7 +198,7 @@ class TableCache {
   using Key = std::tuple<const NormalMap*, const GainMask*, float, int>;
   struct Entry {
     std::shared_ptr<const CoefficientTables> tables;  // null: over budget
-    std::shared_ptr<const NormalMap> map;       // kept alive: the key is its address
+    std::shared_ptr<const NormalMap> map;             // kept alive: the key is its address
     std::shared_ptr<const GainMask> mask;
   };
   std::map<Key, Entry> entries_;

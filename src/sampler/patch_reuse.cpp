@@ -12,12 +12,12 @@ namespace asperity::patch {
 namespace {
 
 // A pixel centre crossing a face's edge within the tolerated move changes a sample's means by
-// up to the coefficients' spread over its pixel count. Samples of fewer than 8 pixels are not
-// kept at all (a box of a fallen stack leaning on another by its edge kept a one-pixel sample
-// of mu 0.90 where a fresh one found none), those of fewer than 32 not while sliding along a
-// plain plane (alikeEverywhere; on the crawling worm's sawtooth skin they strayed by up to 0.37
-// in mu, kept step after step). Such samples are cheap to take again.
-constexpr int kFewestPixelsToKeep = 8;
+// up to the coefficients' spread over its pixel count. Samples of fewer than 32 pixels are
+// therefore kept only while they move by that share of the tolerance in the contact plane (a
+// one-pixel sample by 1 / 32 of it: a box of a fallen stack leaning on another by its edge kept
+// a one-pixel sample of mu 0.90 for 50 steps at the full tolerance where a fresh one found
+// none), and not while sliding along a plain plane (alikeEverywhere; on the crawling worm's
+// sawtooth skin they strayed by up to 0.37 in mu, kept step after step).
 constexpr int kFewestPixelsToSlide = 32;
 
 struct Tolerance {
@@ -180,10 +180,12 @@ void PatchReuse::reuse(std::span<const Body> bodies, std::span<Contact> contacts
     const size_t found = find(keys_, keyOf(c), cursor);
     if (found == kNone) continue;
     const Sample& s = slots_[slot_of_[found]];
-    if (s.covered_pixels < kFewestPixelsToKeep) continue;
+    Tolerance own = tol;
+    if (s.covered_pixels < kFewestPixelsToSlide)
+      own.along *= static_cast<double>(s.covered_pixels) / kFewestPixelsToSlide;
     Motion a = motionOf(toBody(bodies, c.body_a), c, s.on_a, half);
     Motion b = motionOf(toBody(bodies, c.body_b), c, s.on_b, half);
-    if (!holds(a, b, s.phi, c.phi, s.depth, tol)) {
+    if (!holds(a, b, s.phi, c.phi, s.depth, own)) {
       if (s.covered_pixels < kFewestPixelsToSlide) continue;
       if (alikeEverywhere(bodies[c.body_a], c.shape_a)) a.along = 0.0;
       if (alikeEverywhere(bodies[c.body_b], c.shape_b)) b.along = 0.0;

@@ -89,8 +89,8 @@ class PatchReuse {
   std::vector<ToBody> to_body_;                       // per body, valid where stamped
   std::vector<uint64_t> to_body_stamp_;
   uint64_t call_ = 0;
-  FrictionSettings settings_;                         // those the samples were taken with
-  double tolerance_ = 0.0;                            // m: reuse_pixels patch pixels
+  FrictionSettings settings_;  // those the samples were taken with
+  double tolerance_ = 0.0;     // m: reuse_pixels patch pixels
 };
 
 }  // namespace asperity::patch

@@ -285,8 +285,10 @@ TEST(PlanarPath, TiltedFacesWhereFirstOrderMissesTooMuchAreRasterised) {
   const auto across = uniformSlope(32, 0.4f, 0.0f);
   const float heading = static_cast<float>(56.25 * kPi / 180.0);
   const auto off_axis = uniformSlope(32, 0.4f * std::cos(heading), 0.4f * std::sin(heading));
-  const patch::CoefficientTables kinked(*across, nullptr, kDefaultMuMax, patch::tableLayout(32, 32, 4), nullptr);
-  const patch::CoefficientTables clear(*off_axis, nullptr, kDefaultMuMax, patch::tableLayout(32, 32, 4), nullptr);
+  const patch::CoefficientTables kinked(*across, nullptr, kDefaultMuMax,
+                                        patch::tableLayout(32, 32, 4), nullptr);
+  const patch::CoefficientTables clear(*off_axis, nullptr, kDefaultMuMax,
+                                       patch::tableLayout(32, 32, 4), nullptr);
   EXPECT_NEAR(kinked.tiltError(), 2.0 / kPi * std::tan(patch::kMaxTilt), 1e-6);
   EXPECT_EQ(clear.tiltError(), 0.0);
   auto world = boxOnPlane(across, 0.3, "cpu");
