@@ -131,7 +131,7 @@ size_t PatchReuse::find(const std::vector<Key>& keys, const Key& key, size_t& cu
 const PatchReuse::ToBody& PatchReuse::toBody(std::span<const Body> bodies, BodyId id) {
   if (to_body_.size() < bodies.size()) {
     to_body_.resize(bodies.size());
-    to_body_stamp_.resize(bodies.size(), 0);
+    to_body_stamp_.resize(bodies.size(), ~uint64_t{0});  // made in no call yet
   }
   ToBody& t = to_body_[id];
   if (to_body_stamp_[id] != call_) {
