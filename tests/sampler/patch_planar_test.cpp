@@ -115,6 +115,39 @@ TEST(PlanarTables, DiamondsMatchTheirSplitCopies) {
   }
 }
 
+TEST(PlanarTables, UniformSlopeGradientIntegratesToTheClosedForm) {
+  // Where f = g . e > 0 the gradient in the tilt of a uniform slope p (unclamped) is
+  // -(2 / pi) (e + (p . e) p), 0 elsewhere. Its cells are twice as large as f's where the
+  // cells' rows and columns are even (kGradientCoarsening), as f's where they are odd (17 x 17
+  // at one cell per texel); either way its integrals count f's cells (the area f's gives).
+  for (const int size : {16, 17}) {
+    const auto map = uniformSlope(size, 0.3f, -0.2f);
+    const patch::TableLayout layout =
+        size % 2 == 0 ? patch::tableLayout(size, size, 4) : patch::TableLayout{1, 16, 4};
+    const patch::CoefficientTables tables(*map, nullptr, 4.0f, layout, nullptr);
+    const Vec3f m = map->at(0, 0);
+    const Vec2 p(m.x() / m.z(), m.y() / m.z());
+    const Vec2f g = ploughingVector(m, Side::B, 4.0f);
+    const std::vector<Vec2> polygon = {{3.3, -7.1}, {41.9, 2.2}, {30.4, 29.7}, {-5.2, 12.5}};
+    std::vector<int> which(static_cast<size_t>(tables.angles()));
+    for (int a = 0; a < tables.angles(); ++a) which[static_cast<size_t>(a)] = a;
+    std::vector<double> f(which.size()), x(which.size()), y(which.size());
+    const double area = tables.integrate(polygon, which, f, 0);
+    EXPECT_NEAR(tables.integrate(polygon, which, x, 1), area, 1e-9 * area) << "size " << size;
+    EXPECT_NEAR(tables.integrate(polygon, which, y, 2), area, 1e-9 * area) << "size " << size;
+    for (int a = 0; a < tables.angles(); ++a) {
+      const double t = 2.0 * kPi * a / tables.angles();
+      const Vec2 e(std::cos(t), std::sin(t));
+      const bool on = g.x() * e.x() + g.y() * e.y() > 0.0;
+      const Vec2 expected = on ? Vec2(-2.0 / kPi * (e + p.dot(e) * p)) : Vec2(0.0, 0.0);
+      EXPECT_NEAR(x[static_cast<size_t>(a)] / area, expected.x(), 1e-5)
+          << "size " << size << " angle " << a;
+      EXPECT_NEAR(y[static_cast<size_t>(a)] / area, expected.y(), 1e-5)
+          << "size " << size << " angle " << a;
+    }
+  }
+}
+
 TEST(PlanarTables, BothSimdCopiesBuildTheSameBits) {
   // The build's loop over angles has an AVX2 copy (math/simd.hpp); the tables (f and its tilt
   // gradient) and the tilt error must not depend on which one ran.
