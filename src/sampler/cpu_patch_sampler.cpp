@@ -350,8 +350,7 @@ bool CpuPatchSampler::State::planarFace(const patch::Volume& volume, const patch
   if (out.tables == nullptr) return false;  // a texture over the tables' budget is rasterised
   // A tilted face whose first-order shading may miss more than kMaxTiltError (in mu, after
   // its gain) is rasterised.
-  const double gain = patch::gainsOf(range, range, 0.0).k_a;
-  return std::abs(gain) * out.tables->tiltError() * patch::tiltOf(*out.face) /
+  return std::abs(patch::gainOf(range)) * out.tables->tiltError() * patch::tiltOf(*out.face) /
              std::tan(patch::kMaxTilt) <=
          patch::kMaxTiltError;
 }

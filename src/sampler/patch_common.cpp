@@ -79,11 +79,14 @@ ShapeRange shapesOf(std::span<const Body> bodies, const Contact& c, Side side) {
   return {&body, shape, shape + 1};
 }
 
+double gainOf(const ShapeRange& range) {
+  return range.first < range.last
+             ? range.body->shapes[static_cast<size_t>(range.first)].surface.gain
+             : 0.0;
+}
+
 PatchGains gainsOf(const ShapeRange& a, const ShapeRange& b, double mu0) {
-  auto gain = [](const ShapeRange& r) {
-    return r.first < r.last ? r.body->shapes[static_cast<size_t>(r.first)].surface.gain : 0.0;
-  };
-  return {mu0, gain(a), gain(b)};
+  return {mu0, gainOf(a), gainOf(b)};
 }
 
 void finishContact(Contact& c, std::span<const double> sums_a, std::span<const double> sums_b,

@@ -31,6 +31,8 @@ ShapeRange shapesOf(std::span<const Body> bodies, const Contact& contact, Side s
 // mu0 and the gains k_A, k_B of Eq. 7 (the gain of the contact's shape, or of the body's first
 // shape when the index is -1).
 PatchGains gainsOf(const ShapeRange& a, const ShapeRange& b, double mu0);
+// The gain k of one surface (its first shape's; 0 for none).
+double gainOf(const ShapeRange& range);
 
 // Eq. 8 then Eq. 7: means of the per-surface sums over |P| = count pixels into contact.mu;
 // count == 0 gives the fallback mu = mu0 (contact.fallback = true).
