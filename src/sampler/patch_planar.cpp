@@ -363,18 +363,18 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
   gradient_grid_.table = gradient_.data();
   // Rows of gradient cells are independent: each thread writes its own running sums (and
   // those of f's rows within), in the same order of sums.
-  tilt_error_rows_.assign(static_cast<size_t>(rows_) * m, 0.0);
-  forEachOn(pool, static_cast<size_t>(gradient_grid_.rows), 2,
-            [&](size_t row) { buildRows(map, mask, mu_max, copy, static_cast<int>(row)); });
+  std::vector<double> row_errors(static_cast<size_t>(rows_) * m, 0.0);  // per row and angle
+  forEachOn(pool, static_cast<size_t>(gradient_grid_.rows), 2, [&](size_t row) {
+    buildRows(map, mask, mu_max, copy, static_cast<int>(row), row_errors.data());
+  });
   // The mean over the map, rows added in order (the same bits for any thread count); the
   // largest over the angles.
   std::vector<double> error(m, 0.0);
   for (size_t row = 0; row < static_cast<size_t>(rows_); ++row)
-    for (size_t a = 0; a < m; ++a) error[a] += tilt_error_rows_[row * m + a];
+    for (size_t a = 0; a < m; ++a) error[a] += row_errors[row * m + a];
   const double samples =
       static_cast<double>(rows_) * cols_ * (kSamplesPerTexel / sub_) * (kSamplesPerTexel / sub_);
   tilt_error_ = *std::max_element(error.begin(), error.end()) / samples;
-  tilt_error_rows_ = {};
 }
 
 namespace {
@@ -452,7 +452,7 @@ int CoefficientTables::gradientCoarsening(int cols, int rows) {
 }
 
 void CoefficientTables::buildRows(const NormalMap& map, const GainMask* mask, float mu_max,
-                                  SimdCopy copy, int gradient_row) {
+                                  SimdCopy copy, int gradient_row, double* row_errors) {
   const int q = kSamplesPerTexel / sub_;  // samples per cell along each axis
   const auto m = static_cast<size_t>(angles_);
   // A cell's sums in float (at most q x q = 16 samples) over the angles' two arrays: the loops
@@ -469,9 +469,10 @@ void CoefficientTables::buildRows(const NormalMap& map, const GainMask* mask, fl
   const float* dy = dy_.data();
   const double inv_sub = 1.0 / sub_;
   const double per_sample = 1.0 / (q * q);
+  std::vector<double> running(2 * m);
   for (int row = gradient_row * coarse_; row < (gradient_row + 1) * coarse_; ++row) {
-    double* row_error = tilt_error_rows_.data() + static_cast<size_t>(row) * m;
-    std::vector<double> running(m, 0.0);
+    double* row_error = row_errors + static_cast<size_t>(row) * m;
+    std::fill(running.begin(), running.begin() + static_cast<long>(m), 0.0);
     // Point x of the row holds the sums over cells [0, x).
     float* line = sums_.data() + static_cast<size_t>(row) * static_cast<size_t>(cols_ + 1) * m;
     std::fill(line, line + m, 0.0f);
@@ -515,7 +516,7 @@ void CoefficientTables::buildRows(const NormalMap& map, const GainMask* mask, fl
   }
   // The gradient's running sums of its cells' means (each the mean of coarse x coarse cells).
   const double per_cell = 1.0 / (coarse_ * coarse_);
-  std::vector<double> running(2 * m, 0.0);
+  std::fill(running.begin(), running.end(), 0.0);
   float* line = gradient_.data() + static_cast<size_t>(gradient_row) * (gradient_cols + 1) * 2 * m;
   std::fill(line, line + 2 * m, 0.0f);
   for (size_t c = 0; c < gradient_cols; ++c) {
@@ -692,11 +693,19 @@ double CoefficientTables::accumulate(const Grid& grid, std::span<const Vec2> pol
   return 0.5 * std::abs(area);
 }
 
-std::span<const Vec2> CoefficientTables::onGradientCells(std::span<const Vec2> polygon,
-                                                         std::array<Vec2, 32>& scratch) const {
-  const size_t n = std::min(polygon.size(), scratch.size());
-  for (size_t k = 0; k < n; ++k) scratch[k] = polygon[k] / coarse_;
-  return {scratch.data(), n};
+double CoefficientTables::accumulateGradient(std::span<const Vec2> polygon,
+                                             std::span<const Range> ranges, float* out) const {
+  // The polygon on the gradient's cells; each of them counts coarse^2 of f's.
+  std::array<Vec2, 32> on_cells;
+  const size_t n = std::min(polygon.size(), on_cells.size());
+  for (size_t k = 0; k < n; ++k) on_cells[k] = polygon[k] / coarse_;
+  const double area =
+      accumulate(gradient_grid_, std::span<const Vec2>(on_cells.data(), n), ranges, out);
+  size_t width = 0;
+  for (const Range& r : ranges) width += static_cast<size_t>(r.len);
+  const auto cells = static_cast<float>(coarse_ * coarse_);
+  for (size_t k = 0; k < width; ++k) out[k] *= cells;
+  return area * coarse_ * coarse_;
 }
 
 double CoefficientTables::integrateGroups(std::span<const Vec2> polygon, int phase, int count,
@@ -717,19 +726,13 @@ double CoefficientTables::integrateGroups(std::span<const Vec2> polygon, int pha
   const double area =
       accumulate(f_grid_, polygon, std::span<const Range>(ranges.data(), used), out);
   if (gradient) {
-    // The same places in the gradient's x values and then in its y values, on its cells; an
-    // integral over them counts coarse^2 of f's cells each.
+    // The same places in the gradient's x values and then in its y values.
     size_t width = 0;
     for (size_t r = 0; r < used; ++r) {
       width += static_cast<size_t>(ranges[r].len);
       ranges[used + r] = {ranges[r].begin + angles_, ranges[r].len};
     }
-    std::array<Vec2, 32> scratch;
-    float* g = out + width;
-    accumulate(gradient_grid_, onGradientCells(polygon, scratch),
-               std::span<const Range>(ranges.data(), 2 * used), g);
-    const auto cells = static_cast<float>(coarse_ * coarse_);
-    for (size_t k = 0; k < 2 * width; ++k) g[k] *= cells;
+    accumulateGradient(polygon, std::span<const Range>(ranges.data(), 2 * used), out + width);
   }
   return area;
 }
@@ -744,11 +747,7 @@ double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<con
     area = accumulate(f_grid_, polygon, std::span<const Range>(&range, 1), all.data());
   } else {
     const Range range{(channel - 1) * angles_, angles_};
-    std::array<Vec2, 32> scratch;
-    area = coarse_ * coarse_ *
-           accumulate(gradient_grid_, onGradientCells(polygon, scratch),
-                      std::span<const Range>(&range, 1), all.data());
-    for (float& v : all) v *= static_cast<float>(coarse_ * coarse_);
+    area = accumulateGradient(polygon, std::span<const Range>(&range, 1), all.data());
   }
   for (size_t k = 0; k < which.size(); ++k) {
     const int a = which[k];
@@ -790,11 +789,8 @@ class SharedTables {
         return e.tables;
       }
     }
-    Entry entry{
-        hash,       map,
-        mask,       mu_max,
-        directions, std::make_shared<CoefficientTables>(*map, mask.get(), mu_max, layout, pool),
-        clock_};
+    auto tables = std::make_shared<CoefficientTables>(*map, mask.get(), mu_max, layout, pool);
+    Entry entry{hash, map, mask, mu_max, directions, std::move(tables), clock_};
     entries_.push_back(entry);
     forgetUnused();
     return entry.tables;
@@ -892,8 +888,12 @@ std::vector<TextureTables> TableCache::list() const {
   return out;
 }
 
+Vec2 tauOf(const Planar& prim) {
+  return Vec2(prim.tbn[2].c, prim.tbn[5].c) / prim.tbn[8].c;
+}
+
 double tiltOf(const Planar& prim) {
-  return std::hypot(prim.tbn[2].c, prim.tbn[5].c) / std::abs(prim.tbn[8].c);
+  return tauOf(prim).norm();
 }
 
 bool isFlatFace(const Planar& prim) {
@@ -1022,9 +1022,9 @@ void planarMeans(const Footprint& footprint, const PlanarSurface& surface, Side 
     w0 = (ex * eb.y() - ey * eb.x()) * scale;
     w1 = (ea.x() * ey - ea.y() * ex) * scale;
   }
-  // The face's tilt: the contact normal in its frame is (tau, 1) / |(tau, 1)| up to sign (the
-  // same tau for A and B). Below kFlat the gradient's channels are not read.
-  const Vec2 tau = Vec2(face.tbn[2].c, face.tbn[5].c) / face.tbn[8].c;
+  // The face's tilt (the same tau for A and B). Below kFlat the gradient's channels are not
+  // read.
+  const Vec2 tau = tauOf(face);
   constexpr double kFlat = 1e-7;
   const bool tilted = tau.squaredNorm() > kFlat * kFlat;
   if (tables->group() != n) {

@@ -139,8 +139,9 @@ class CoefficientTables {
 
  private:
   // The rows of f's cells within one row of gradient cells, and that row.
+  // Each row's tilt error sums (per angle) go to row_errors + row x angles.
   void buildRows(const NormalMap& map, const GainMask* mask, float mu_max, SimdCopy copy,
-                 int gradient_row);
+                 int gradient_row, double* row_errors);
   // The row sums over [begin, begin + len) of a point's values in `table` (per_point floats a
   // point; at most 4 ranges), each times a strip's height, into out (ranges' values one after
   // the other).
@@ -155,13 +156,13 @@ class CoefficientTables {
   };
   double accumulate(const Grid& grid, std::span<const Vec2> polygon, std::span<const Range> ranges,
                     float* out) const;
-  // A polygon in f's cells on the gradient's (at most 32 vertices, into scratch).
-  std::span<const Vec2> onGradientCells(std::span<const Vec2> polygon,
-                                        std::array<Vec2, 32>& scratch) const;
+  // accumulate on the gradient's table for a polygon in f's cells (at most 32 vertices): the
+  // integrals and the area (returned) counted in f's cells.
+  double accumulateGradient(std::span<const Vec2> polygon, std::span<const Range> ranges,
+                            float* out) const;
 
   int cols_ = 0, rows_ = 0, sub_ = 1, angles_ = 0, group_ = 1, phases_ = 1;
   double tilt_error_ = 0.0;
-  std::vector<double> tilt_error_rows_;  // per row and angle, while building
   int map_width_ = 0, map_height_ = 0;
   std::vector<float> dx_, dy_;  // the tabulated e, as two arrays (the build's loop vectorises)
   std::vector<size_t> place_;   // where angle a lies among a point's values (see sums_)
@@ -218,7 +219,10 @@ struct Footprint {
   int pixels = 0;
 };
 
-// |tau|: the tangent of a flat primitive's tilt against the contact plane (0 when it lies in it).
+// tau = (T . n, B . n) / (N . n) of a flat primitive: the contact normal's slope in its frame,
+// the same formula for A and B (docs/samplers.md, "Tilted faces").
+Vec2 tauOf(const Planar& prim);
+// |tau|: the tangent of its tilt against the contact plane (0 when it lies in it).
 double tiltOf(const Planar& prim);
 
 // Whether `prim` may stand for its surface in the planar path: flat-framed, tilted by at most
