@@ -3,6 +3,9 @@
 // from 10 to 10 000 contacts, rasterised or through the planar path's tables; and the Stanford
 // bunny (glmark2's OBJ through loadObjMesh, all 69 666 triangles or simplified to 2000,
 // planar-projected, 1 mm deep) on the plane. Counter `per_contact` is the time per contact.
+// BM_SceneContacts samples the contacts that three scenes' worlds meet over their first 2 s
+// (every 10th step), each freshly (no reuse): the mix of faces, tilts, footprints and
+// textures the sampler meets inside a step, and the number a step's fresh contacts cost.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -14,6 +17,7 @@
 #include "asperity/error.hpp"
 #include "asperity/geometry/mesh_io.hpp"
 #include "asperity/sampler/cpu_patch_sampler.hpp"
+#include "asperity/scene/scene.hpp"
 #include "sampler_bench_scene.hpp"
 
 namespace asperity {
@@ -124,6 +128,64 @@ void BM_BunnyOnPlane(benchmark::State& state) {
   run(state, scene, static_cast<int>(state.range(0)));
 }
 BENCHMARK(BM_BunnyOnPlane)->ArgNames({"N", "triangles"})->Args({4, 0})->Args({4, 2000});
+
+// A world's bodies and contacts after one of its steps.
+struct Snapshot {
+  std::vector<Body> bodies;
+  std::vector<Contact> contacts;
+};
+
+const char* const kScenes[] = {"stacking.json", "examples/oak_stacks.json",
+                               "boxes_on_materials.json"};
+
+// Snapshots of every 10th step of the scene's first 200 steps, and the scene's settings.
+std::vector<Snapshot> sceneSnapshots(const std::string& name, FrictionSettings& settings) {
+  const SceneDesc scene = loadScene(std::string(ASPERITY_SOURCE_DIR) + "/scenes/" + name);
+  InstantiateOptions options;
+  std::unique_ptr<World> world = instantiate(scene, options);
+  settings = world->settings().friction;
+  std::vector<Snapshot> snapshots;
+  for (int step = 1; step <= 200; ++step) {
+    world->step();
+    if (step % 10 != 0) continue;
+    const std::span<const Body> bodies = world->bodies();
+    snapshots.push_back({std::vector<Body>(bodies.begin(), bodies.end()), world->contacts()});
+  }
+  return snapshots;
+}
+
+void BM_SceneContacts(benchmark::State& state) {
+  FrictionSettings settings;
+  std::vector<Snapshot> snapshots;
+  try {
+    snapshots = sceneSnapshots(kScenes[state.range(0)], settings);
+  } catch (const Error& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  settings.reuse_pixels = 0.0;  // every contact sampled afresh
+  CpuSamplerOptions options;
+  options.path = state.range(1) != 0 ? PatchPath::Planar : PatchPath::Raster;
+  CpuPatchSampler sampler(options);
+  size_t contacts = 0;
+  int planar = 0;
+  for (Snapshot& s : snapshots) {  // builds the tables, outside the timing
+    sampler.computeCoefficients(s.bodies, s.contacts, settings);
+    contacts += s.contacts.size();
+    planar += sampler.lastPlanarCount();
+  }
+  for (auto _ : state) {
+    for (Snapshot& s : snapshots) sampler.computeCoefficients(s.bodies, s.contacts, settings);
+    benchmark::DoNotOptimize(snapshots.data());
+  }
+  state.counters["per_contact"] = benchmark::Counter(
+      static_cast<double>(contacts),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["planar_share"] = static_cast<double>(planar) / static_cast<double>(contacts);
+  state.SetLabel(kScenes[state.range(0)]);
+}
+// scene: 0 stacking, 1 oak_stacks, 2 boxes_on_materials; planar: the planar path.
+BENCHMARK(BM_SceneContacts)->ArgNames({"scene", "planar"})->ArgsProduct({{0, 1, 2}, {0, 1}});
 
 }  // namespace
 }  // namespace asperity
