@@ -9,6 +9,7 @@
 #include <limits>
 #include <mutex>
 #include <new>
+#include <random>
 #include <string_view>
 
 #include "asperity/error.hpp"
@@ -240,9 +241,10 @@ int centresInRow(const Volume& volume, const Polygon& poly, int j,
   return i1 - i0 + 1;
 }
 
-// Without `depth`, the faces' edge tests alone.
+// Without `depth`, the faces' edge tests alone. The count stops once it reaches `enough` (a
+// coverage test needs only the first row with a centre).
 int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar* const> faces,
-              bool depth = true) {
+              bool depth = true, int enough = std::numeric_limits<int>::max()) {
   if (poly.count < 3) return 0;
   // Walked upwards row by row (a convex polygon's horizontal edges lie at ymin or ymax, where
   // the rows are counted the exact way).
@@ -276,8 +278,14 @@ int centresIn(const Volume& volume, const Polygon& poly, std::span<const Planar*
     if (i0 <= i1 && i0 - a < 1e-6 && !kept(i0, y)) ++i0;
     if (i1 >= i0 && b - i1 < 1e-6 && !kept(i1, y)) --i1;
     pixels += std::max(0, i1 - i0 + 1);
+    if (pixels >= enough) break;
   }
   return pixels;
+}
+
+bool noCentreIn(const Volume& volume, const Polygon& poly, std::span<const Planar* const> faces,
+                bool depth = true) {
+  return centresIn(volume, poly, faces, depth, 1) == 0;
 }
 
 }  // namespace
@@ -303,10 +311,13 @@ size_t TableLayout::bytes(int width, int height) const {
   const int coarse = CoefficientTables::gradientCoarsening(cols, rows);
   const auto m = static_cast<size_t>(angles);
   const size_t f = static_cast<size_t>(rows) * static_cast<size_t>(cols + 1) * m;
-  const size_t gradient = static_cast<size_t>(rows / coarse) *
-                          static_cast<size_t>(cols / coarse + 1) *
-                          (CoefficientTables::kChannels - 1) * m;
-  return (f + gradient) * sizeof(float);
+  const size_t gradient_point = (CoefficientTables::kChannels - 1) * m;
+  const size_t gradient =
+      static_cast<size_t>(rows / coarse) * static_cast<size_t>(cols / coarse + 1) * gradient_point;
+  const size_t coarser =
+      CoefficientTables::coarserFloats(cols, rows, m) +
+      CoefficientTables::coarserFloats(cols / coarse, rows / coarse, gradient_point);
+  return (f + gradient + coarser) * sizeof(float);
 }
 
 TableLayout tableLayout(int width, int height, int directions) {
@@ -361,6 +372,8 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
                    static_cast<size_t>(gradient_grid_.cols + 1) * gradient_grid_.per_point);
   f_grid_ = {sums_.data(), m, cols_, rows_};
   gradient_grid_.table = gradient_.data();
+  f_levels_ = {f_grid_};
+  gradient_levels_ = {gradient_grid_};
   // Rows of gradient cells are independent: each thread writes its own running sums (and
   // those of f's rows within), in the same order of sums.
   std::vector<double> row_errors(static_cast<size_t>(rows_) * m, 0.0);  // per row and angle
@@ -375,6 +388,111 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
   const double samples =
       static_cast<double>(rows_) * cols_ * (kSamplesPerTexel / sub_) * (kSamplesPerTexel / sub_);
   tilt_error_ = *std::max_element(error.begin(), error.end()) / samples;
+  // Coarser levels while a footprint's mean on them stays within kMaxLevelError of the finest
+  // level's (the gradient's times the largest tilt it is multiplied by).
+  std::vector<std::vector<float>> made;
+  addCoarserLevels(f_levels_, 1, 1.0, made);
+  addCoarserLevels(gradient_levels_, coarse_, std::tan(kMaxTilt), made);
+  // Into one block (the levels from 1 of f, then of the gradient, as made).
+  size_t floats = 0;
+  for (const auto& level : made) floats += level.size();
+  coarser_.assign(floats);
+  float* at = coarser_.data();
+  auto it = made.begin();
+  for (auto* levels : {&f_levels_, &gradient_levels_}) {
+    for (size_t k = 1; k < levels->size(); ++k, ++it) {
+      (*levels)[k].table = std::copy(it->begin(), it->end(), at) - it->size();
+      at += it->size();
+    }
+  }
+}
+
+namespace {
+
+// Whether a table of cols x rows cells has a coarser level (see coarserFloats).
+bool halves(int cols, int rows, int level) {
+  return level + 1 < CoefficientTables::kMaxLevels && cols % 2 == 0 && rows % 2 == 0 &&
+         cols / 2 >= 4 && rows / 2 >= 4;
+}
+
+}  // namespace
+
+size_t CoefficientTables::coarserFloats(int cols, int rows, size_t per_point) {
+  size_t floats = 0;
+  for (int level = 0; halves(cols, rows, level); ++level) {
+    cols /= 2, rows /= 2;
+    floats += static_cast<size_t>(rows) * static_cast<size_t>(cols + 1) * per_point;
+  }
+  return floats;
+}
+
+void CoefficientTables::addCoarserLevels(std::vector<Grid>& levels, int scale, double weight,
+                                         std::vector<std::vector<float>>& made) const {
+  // A coarse cell's mean is the mean of its 2 x 2 fine cells, so a coarse row's running sum
+  // to point X is the mean of the two fine rows' sums to point 2 X (in coarse cells: a
+  // quarter of their sum).
+  while (halves(levels.back().cols, levels.back().rows, static_cast<int>(levels.size()) - 1)) {
+    const Grid fine = levels.back();
+    const size_t m = fine.per_point;
+    const size_t fine_line = static_cast<size_t>(fine.cols + 1) * m;
+    const size_t coarse_line = static_cast<size_t>(fine.cols / 2 + 1) * m;
+    std::vector<float> sums(static_cast<size_t>(fine.rows / 2) * coarse_line);
+    const Grid coarse{sums.data(), m, fine.cols / 2, fine.rows / 2};
+    for (size_t r = 0; r < static_cast<size_t>(coarse.rows); ++r) {
+      const float* a = fine.table + 2 * r * fine_line;
+      const float* b = a + fine_line;
+      float* out = sums.data() + r * coarse_line;
+      for (size_t x = 0; x <= static_cast<size_t>(coarse.cols); ++x)
+        for (size_t k = 0; k < m; ++k)
+          out[x * m + k] = 0.25f * (a[2 * x * m + k] + b[2 * x * m + k]);
+    }
+    const int level = static_cast<int>(levels.size());
+    if (weight * levelError(levels.front(), coarse, scale, level) > kMaxLevelError) return;
+    levels.push_back(coarse);
+    made.push_back(std::move(sums));  // the vector's data does not move
+  }
+}
+
+double CoefficientTables::levelError(const Grid& finest, const Grid& coarse, int scale,
+                                     int level) const {
+  // Squares turned at random, as small as footprints that take this level (about kMaxStripRows
+  // / 2 of its rows tall), anywhere on the map: the largest difference from the finest
+  // level's mean at any angle. Random textures' boundary cells err each its own way; a
+  // sawtooth's teeth err alike along a side (crawling_worm's skin: a 16-texel sawtooth, whose
+  // contacts strayed up to 58 % from the raster path on cells of one texel).
+  std::mt19937_64 random(12345);
+  auto uniform = [&random] { return static_cast<double>(random() >> 11) * 0x1.0p-53; };
+  const double side = 0.5 * kMaxStripRows * (scale << level) / std::sqrt(2.0);
+  const Range all{0, static_cast<int>(finest.per_point)};
+  std::vector<float> fine_sums(finest.per_point), coarse_sums(finest.per_point);
+  double worst = 0.0;
+  for (int k = 0; k < kLevelChecks; ++k) {
+    const Vec2 centre(uniform() * cols_, uniform() * rows_);
+    const double turn = uniform() * kTwoPi;
+    const Vec2 along(std::cos(turn), std::sin(turn)), across(-along.y(), along.x());
+    std::array<Vec2, 4> square;
+    for (size_t c = 0; c < 4; ++c) {
+      const double a = (c == 1 || c == 2) ? 0.5 : -0.5, b = c >= 2 ? 0.5 : -0.5;
+      square[c] = centre + side * (a * along + b * across);
+    }
+    const double area =
+        accumulateScaled(finest, scale, square, std::span<const Range>(&all, 1), fine_sums.data());
+    accumulateScaled(coarse, scale << level, square, std::span<const Range>(&all, 1),
+                     coarse_sums.data());
+    for (size_t a = 0; a < finest.per_point; ++a)
+      worst = std::max(worst, std::abs(static_cast<double>(coarse_sums[a] - fine_sums[a])) / area);
+  }
+  return worst;
+}
+
+int CoefficientTables::levelFor(double height, const std::vector<Grid>& levels, int scale) {
+  int level = 0;
+  double rows = height / scale;
+  while (rows > kMaxStripRows && level + 1 < static_cast<int>(levels.size())) {
+    rows *= 0.5;
+    ++level;
+  }
+  return level;
 }
 
 namespace {
@@ -693,19 +811,21 @@ double CoefficientTables::accumulate(const Grid& grid, std::span<const Vec2> pol
   return 0.5 * std::abs(area);
 }
 
-double CoefficientTables::accumulateGradient(std::span<const Vec2> polygon,
-                                             std::span<const Range> ranges, float* out) const {
-  // The polygon on the gradient's cells; each of them counts coarse^2 of f's.
+double CoefficientTables::accumulateScaled(const Grid& grid, int scale,
+                                           std::span<const Vec2> polygon,
+                                           std::span<const Range> ranges, float* out) const {
+  if (scale == 1) return accumulate(grid, polygon, ranges, out);
+  // The polygon on the grid's cells; each of them counts scale^2 of f's.
   std::array<Vec2, 32> on_cells;
   const size_t n = std::min(polygon.size(), on_cells.size());
-  for (size_t k = 0; k < n; ++k) on_cells[k] = polygon[k] / coarse_;
-  const double area =
-      accumulate(gradient_grid_, std::span<const Vec2>(on_cells.data(), n), ranges, out);
+  const double inv = 1.0 / scale;  // a power of two: exact
+  for (size_t k = 0; k < n; ++k) on_cells[k] = polygon[k] * inv;
+  const double area = accumulate(grid, std::span<const Vec2>(on_cells.data(), n), ranges, out);
   size_t width = 0;
   for (const Range& r : ranges) width += static_cast<size_t>(r.len);
-  const auto cells = static_cast<float>(coarse_ * coarse_);
+  const auto cells = static_cast<float>(scale * scale);
   for (size_t k = 0; k < width; ++k) out[k] *= cells;
-  return area * coarse_ * coarse_;
+  return area * scale * scale;
 }
 
 double CoefficientTables::integrateGroups(std::span<const Vec2> polygon, int phase, int count,
@@ -723,8 +843,12 @@ double CoefficientTables::integrateGroups(std::span<const Vec2> polygon, int pha
     ranges[1] = {second * group_, group_};
     used = 2;
   }
-  const double area =
-      accumulate(f_grid_, polygon, std::span<const Range>(ranges.data(), used), out);
+  // A tall footprint on a coarser level (kMaxStripRows).
+  double ymin = polygon.empty() ? 0.0 : polygon[0].y(), ymax = ymin;
+  for (const Vec2& p : polygon) ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
+  const int level = levelFor(ymax - ymin, f_levels_, 1);
+  const double area = accumulateScaled(f_levels_[static_cast<size_t>(level)], 1 << level, polygon,
+                                       std::span<const Range>(ranges.data(), used), out);
   if (gradient) {
     // The same places in the gradient's x values and then in its y values.
     size_t width = 0;
@@ -732,7 +856,9 @@ double CoefficientTables::integrateGroups(std::span<const Vec2> polygon, int pha
       width += static_cast<size_t>(ranges[r].len);
       ranges[used + r] = {ranges[r].begin + angles_, ranges[r].len};
     }
-    accumulateGradient(polygon, std::span<const Range>(ranges.data(), 2 * used), out + width);
+    const int g = levelFor(ymax - ymin, gradient_levels_, coarse_);
+    accumulateScaled(gradient_levels_[static_cast<size_t>(g)], coarse_ << g, polygon,
+                     std::span<const Range>(ranges.data(), 2 * used), out + width);
   }
   return area;
 }
@@ -747,7 +873,8 @@ double CoefficientTables::integrate(std::span<const Vec2> polygon, std::span<con
     area = accumulate(f_grid_, polygon, std::span<const Range>(&range, 1), all.data());
   } else {
     const Range range{(channel - 1) * angles_, angles_};
-    area = accumulateGradient(polygon, std::span<const Range>(&range, 1), all.data());
+    area = accumulateScaled(gradient_grid_, coarse_, polygon, std::span<const Range>(&range, 1),
+                            all.data());
   }
   for (size_t k = 0; k < which.size(); ++k) {
     const int a = which[k];
@@ -864,10 +991,15 @@ const CoefficientTables* TableCache::get(const std::shared_ptr<const NormalMap>&
                                          const std::shared_ptr<const GainMask>& mask, float mu_max,
                                          int directions, const ThreadPool* pool) {
   const Key key{map.get(), mask.get(), mu_max, directions};
+  for (const auto& [k, tables] : first_)
+    if (k == key) return tables;
   auto it = entries_.find(key);
   if (it != entries_.end()) return it->second.tables.get();
   Entry entry{SharedTables::instance().get(map, mask, mu_max, directions, pool), map, mask};
-  return entries_.emplace(key, std::move(entry)).first->second.tables.get();
+  const CoefficientTables* tables =
+      entries_.emplace(key, std::move(entry)).first->second.tables.get();
+  if (first_.size() < kFirst) first_.emplace_back(key, tables);
+  return tables;
 }
 
 const CoefficientTables* TableCache::find(const NormalMap* map, const GainMask* mask, float mu_max,
@@ -910,7 +1042,7 @@ bool coversNoCentre(const Volume& volume, const Planar& prim) {
   // with probability about its area in pixels (1e-3), and then changes one pixel of P.
   if (areaOf(poly) < kSliverPixels * volume.pixel * volume.pixel) return true;
   const Planar* faces[] = {&prim};
-  return centresIn(volume, poly, faces) == 0;
+  return noCentreIn(volume, poly, faces);
 }
 
 bool noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& depth,
@@ -947,7 +1079,7 @@ bool noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& 
   } else {
     // Cut by the clip: a secondary face with no pixel centre within its edges (a tilted
     // box's side seen nearly edge-on) has none within the clip however it moves.
-    if (coverage && centresIn(volume, poly, faces, false) == 0) {
+    if (coverage && noCentreIn(volume, poly, faces, false)) {
       depth.limitOutside(edge_on);
       return true;
     }
@@ -964,7 +1096,7 @@ bool noteDepthDecisions(const Volume& volume, const Planar& prim, DepthMargins& 
     clipBy(poly, clip);
     if (poly.count < 3 || areaOf(poly) < sliver) return true;
   }
-  return centresIn(volume, poly, faces) == 0;
+  return noCentreIn(volume, poly, faces);
 }
 
 Footprint footprintOf(const Volume& volume, const Planar& a, const Planar& b) {

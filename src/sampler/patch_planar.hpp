@@ -104,8 +104,26 @@ class CoefficientTables {
   // memory and of the rows a contact reads.
   static constexpr int kGradientCoarsening = 2;
   static int gradientCoarsening(int cols, int rows);
+  // A footprint taller than this many rows of cells is integrated on a coarser level of the
+  // tables (cells 2, 4, 8 times larger along each axis, each level's sums the means of the
+  // finer level's 2 x 2 cells): a fine map seen through a wide patch (boxes_on_materials'
+  // plaster, 80 texels across) then reads at most about this many strips, not one per texel
+  // row. The boundary cells (error (2)) are larger by as much.
+  static constexpr int kMaxStripRows = 16;
+  static constexpr int kMaxLevels = 4;
+  // A level is used only while footprints read on it stay this close (in mu, before the
+  // surface's gain) to the finest level, checked on kLevelChecks footprints at build time.
+  static constexpr double kMaxLevelError = 5e-3;
+  static constexpr int kLevelChecks = 32;
+  // The floats of the coarser levels of a table of cols x rows cells (per_point floats a
+  // point) at most: levels are made while both counts are even, down to 4 cells, at most
+  // kMaxLevels, and kept while they pass (kMaxLevelError).
+  static size_t coarserFloats(int cols, int rows, size_t per_point);
 
   int angles() const { return angles_; }
+  // Levels of f's sums (1: the finest only) and of the gradient's (see kMaxStripRows).
+  int levels() const { return static_cast<int>(f_levels_.size()); }
+  int gradientLevels() const { return static_cast<int>(gradient_levels_.size()); }
   // A bound on what shading a face tilted by kMaxTilt to first order misses, per fragment in
   // the map's mean, at the worst angle: the mean over the map of max(0, |grad f| tan(kMaxTilt)
   // - |f|) (a fragment errs only where the tilt can carry its f across the kink of max(0, f)).
@@ -115,7 +133,9 @@ class CoefficientTables {
   // Angles per phase (see integrateGroups) and phases.
   int group() const { return group_; }
   int phases() const { return phases_; }
-  size_t bytes() const { return (sums_.size() + gradient_.size()) * sizeof(float); }
+  size_t bytes() const {
+    return (sums_.size() + gradient_.size() + coarser_.size()) * sizeof(float);
+  }
   // Tabulated angle a's direction, and the sine of the step between angles.
   const Vec2& unit(int a) const { return units_[static_cast<size_t>(a)]; }
   double sinStep() const { return sin_step_; }
@@ -156,10 +176,22 @@ class CoefficientTables {
   };
   double accumulate(const Grid& grid, std::span<const Vec2> polygon, std::span<const Range> ranges,
                     float* out) const;
-  // accumulate on the gradient's table for a polygon in f's cells (at most 32 vertices): the
-  // integrals and the area (returned) counted in f's cells.
-  double accumulateGradient(std::span<const Vec2> polygon, std::span<const Range> ranges,
-                            float* out) const;
+  // accumulate on a table whose cells are `scale` of f's cells along each axis, for a polygon
+  // in f's cells (at most 32 vertices): the integrals and the area (returned) counted in f's
+  // cells.
+  double accumulateScaled(const Grid& grid, int scale, std::span<const Vec2> polygon,
+                          std::span<const Range> ranges, float* out) const;
+  // The coarsest level needed for a footprint `height` f cells tall on `levels` (level 0 of
+  // cells `scale` f cells wide): its index.
+  static int levelFor(double height, const std::vector<Grid>& levels, int scale);
+  // Appends coarser levels of levels[0] (cells `scale` of f's), each's sums appended to
+  // `made`, while levelError times `weight` stays within kMaxLevelError.
+  void addCoarserLevels(std::vector<Grid>& levels, int scale, double weight,
+                        std::vector<std::vector<float>>& made) const;
+  // The largest difference, in a footprint's mean at any angle, between `coarse` (level
+  // `level` of `finest`, whose cells are `scale` of f's) and `finest`, over kLevelChecks
+  // turned squares as small as footprints that would read it.
+  double levelError(const Grid& finest, const Grid& coarse, int scale, int level) const;
 
   int cols_ = 0, rows_ = 0, sub_ = 1, angles_ = 0, group_ = 1, phases_ = 1;
   double tilt_error_ = 0.0;
@@ -177,6 +209,10 @@ class CoefficientTables {
   TableMemory gradient_;
   int coarse_ = 1;  // gradientCoarsening
   Grid f_grid_, gradient_grid_;
+  // Level k of f's and of the gradient's sums (cells 2^k as large; level 0 is f_grid_ and
+  // gradient_grid_); the levels from 1 live in coarser_.
+  std::vector<Grid> f_levels_, gradient_levels_;
+  TableMemory coarser_;
 };
 
 // Tables by texture identity, shared by every body whose surface uses the same map. get() builds
@@ -203,6 +239,10 @@ class TableCache {
     std::shared_ptr<const GainMask> mask;
   };
   std::map<Key, Entry> entries_;
+  // The first entries made, scanned before the map: every fresh contact of a step looks up
+  // its shapes' few textures again. Entries are never removed, so neither are these.
+  static constexpr size_t kFirst = 16;
+  std::vector<std::pair<Key, const CoefficientTables*>> first_;
 };
 
 // One surface of a planar contact: its face and what its coefficients need.
