@@ -117,6 +117,7 @@ nlohmann::ordered_json tablesJson(const World& world) {
                        {"width", t.map->width()},
                        {"height", t.map->height()},
                        {"masked", t.mask != nullptr},
+                       {"levels", t.levels},
                        {"bytes", t.bytes}});
   }
   std::stable_sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {

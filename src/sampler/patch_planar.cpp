@@ -1015,7 +1015,7 @@ std::vector<TextureTables> TableCache::list() const {
     const CoefficientTables* tables = entry.tables.get();
     if (!tables || std::find(listed.begin(), listed.end(), tables) != listed.end()) continue;
     listed.push_back(tables);
-    out.push_back({entry.map.get(), entry.mask.get(), tables->bytes()});
+    out.push_back({entry.map.get(), entry.mask.get(), tables->bytes(), tables->levels()});
   }
   return out;
 }

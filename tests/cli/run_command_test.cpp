@@ -108,16 +108,20 @@ TEST(RunCommand, StatsListThePlanarTablesPerTexture) {
                 .exit_code,
             0);
   const nlohmann::json planar = nlohmann::json::parse(slurpBinary(dir + "/planar.json"));
-  std::map<std::string, int> widths;
+  std::map<std::string, int> widths, levels;
   size_t total = 0;
   for (const nlohmann::json& t : planar["tables"]) {
     widths[t["texture"].get<std::string>()] = t["width"].get<int>();
+    levels[t["texture"].get<std::string>()] = t["levels"].get<int>();
     EXPECT_EQ(t["width"], t["height"]);
     EXPECT_FALSE(t["masked"].get<bool>());
     EXPECT_GT(t["bytes"].get<size_t>(), 0u);
     total += t["bytes"].get<size_t>();
   }
   EXPECT_EQ(widths, (std::map<std::string, int>{{"acrylic", 128}, {"cut_pvc", 128}, {"oak", 160}}));
+  // Coarser levels where footprints read on them stay close to the finest (docs/samplers.md):
+  // all of them for the smooth acrylic, none for the grainier cut PVC and oak.
+  EXPECT_EQ(levels, (std::map<std::string, int>{{"acrylic", 4}, {"cut_pvc", 1}, {"oak", 1}}));
   EXPECT_EQ(planar["table_bytes"].get<size_t>(), total);
   ASSERT_EQ(runCli({"run", scene, "--steps", "3", "--sampler", "cpu", "--stats",
                     dir + "/raster.json"})

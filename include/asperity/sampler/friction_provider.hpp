@@ -24,6 +24,7 @@ struct TextureTables {
   const NormalMap* map = nullptr;
   const GainMask* mask = nullptr;
   size_t bytes = 0;
+  int levels = 1;  // of the coefficient sums: the finest, and the coarser ones kept for it
 };
 
 // What every provider needs to know (SPEC 3, Eq. 7).
