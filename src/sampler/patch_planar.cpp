@@ -747,9 +747,8 @@ double CoefficientTables::accumulate(const Grid& grid, std::span<const Vec2> pol
     return SpanEnd{row + static_cast<size_t>(c) * m, static_cast<float>(rem - c),
                    static_cast<float>(repeats)};
   };
-  // Strips are gathered first and their sums read after: each strip's row lies kilobytes
-  // apart in the tables, so their reads are prefetched together instead of waiting for memory
-  // one strip at a time.
+  // Strips are gathered first and their sums read after, range by range, W floats at a time
+  // in registers (addStrips).
   std::array<Strip, 64> strips;
   size_t gathered = 0;
   bool repeats = false;
@@ -770,18 +769,6 @@ double CoefficientTables::accumulate(const Grid& grid, std::span<const Vec2> pol
     gathered = 0;
     repeats = false;
   };
-  auto prefetch = [&](const SpanEnd& e) {
-    const char* p = reinterpret_cast<const char*>(e.cell);
-    const size_t point = m * sizeof(float);
-    for (const Range& r : ranges) {
-      const size_t first_byte = static_cast<size_t>(r.begin) * sizeof(float);
-      const size_t last_byte = static_cast<size_t>(r.begin + r.len) * sizeof(float) - 1;
-      __builtin_prefetch(p + first_byte);
-      __builtin_prefetch(p + last_byte);
-      __builtin_prefetch(p + point + first_byte);
-      __builtin_prefetch(p + point + last_byte);
-    }
-  };
   const auto first = static_cast<long long>(std::floor(ymin));
   int row_index = positiveMod(first, rows);
   for (long long r = first; static_cast<double>(r) < ymax; ++r) {
@@ -800,8 +787,6 @@ double CoefficientTables::accumulate(const Grid& grid, std::span<const Vec2> pol
         st = {endOf(row, lo), endOf(row, hi), row + static_cast<size_t>(cols) * m,
               static_cast<float>(y1 - y0)};
         repeats = repeats || st.b.repeats != st.a.repeats;
-        prefetch(st.a);
-        prefetch(st.b);
         if (gathered == strips.size()) flush();
       }
       y0 = y1;
