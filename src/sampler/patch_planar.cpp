@@ -342,7 +342,8 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
       sub_(layout.sub),
       angles_(layout.angles),
       map_width_(map.width()),
-      map_height_(map.height()) {
+      map_height_(map.height()),
+      copy_(copy) {
   if (map.empty() || angles_ <= 0 || sub_ <= 0 || kSamplesPerTexel % sub_ != 0) {
     throw Error("planar tables: empty map or bad layout (sub " + std::to_string(sub_) +
                 ", angles " + std::to_string(angles_) + ")");
@@ -667,7 +668,8 @@ struct Strip {
 
 // The strips' h (R(b) - R(a)) over W values from `begin` of each point, added to out.
 template <int W>
-void addStrips(const Strip* strips, size_t count, size_t stride, int begin, float* out) {
+[[gnu::always_inline]] inline void addStrips(const Strip* strips, size_t count, size_t stride,
+                                             int begin, float* out) {
   float acc[W] = {};
   for (size_t s = 0; s < count; ++s) {
     const Strip& st = strips[s];
@@ -683,19 +685,43 @@ void addStrips(const Strip* strips, size_t count, size_t stride, int begin, floa
   for (int k = 0; k < W; ++k) out[k] += acc[k];
 }
 
-void addStrips(const Strip* strips, size_t count, size_t stride, int begin, int len, float* out) {
+// addStrips<W> for the widths a contact reads (N or 2N floats); false for any other.
+[[gnu::always_inline]] inline bool addStripsOfWidth(const Strip* strips, size_t count,
+                                                    size_t stride, int begin, int len, float* out) {
   switch (len) {
     case 4:
-      return addStrips<4>(strips, count, stride, begin, out);
+      addStrips<4>(strips, count, stride, begin, out);
+      return true;
     case 8:
-      return addStrips<8>(strips, count, stride, begin, out);
+      addStrips<8>(strips, count, stride, begin, out);
+      return true;
     case 16:
-      return addStrips<16>(strips, count, stride, begin, out);
+      addStrips<16>(strips, count, stride, begin, out);
+      return true;
     case 32:
-      return addStrips<32>(strips, count, stride, begin, out);
+      addStrips<32>(strips, count, stride, begin, out);
+      return true;
     default:
-      break;
+      return false;
   }
+}
+
+#if ASPERITY_AVX2_COPIES
+// The AVX2 copy: eight floats an operation, and no FMA, so the same bits as the baseline's.
+ASPERITY_TARGET_AVX2 bool addStripsAvx2(const Strip* strips, size_t count, size_t stride, int begin,
+                                        int len, float* out) {
+  return addStripsOfWidth(strips, count, stride, begin, len, out);
+}
+#endif
+
+void addStrips(bool avx2, const Strip* strips, size_t count, size_t stride, int begin, int len,
+               float* out) {
+#if ASPERITY_AVX2_COPIES
+  if (avx2 && addStripsAvx2(strips, count, stride, begin, len, out)) return;
+#else
+  (void)avx2;
+#endif
+  if (addStripsOfWidth(strips, count, stride, begin, len, out)) return;
   for (size_t s = 0; s < count; ++s) {
     const Strip& st = strips[s];
     const float* a0 = st.a.cell + begin;
@@ -751,11 +777,12 @@ double CoefficientTables::accumulate(const Grid& grid, std::span<const Vec2> pol
   // in registers (addStrips).
   std::array<Strip, 64> strips;
   size_t gathered = 0;
+  const bool avx2 = simd::avx2(copy_);
   bool repeats = false;
   auto flush = [&] {
     float* o = out;
     for (const Range& r : ranges) {
-      addStrips(strips.data(), gathered, m, r.begin, r.len, o);
+      addStrips(avx2, strips.data(), gathered, m, r.begin, r.len, o);
       if (repeats) {
         for (size_t s = 0; s < gathered; ++s) {
           const Strip& st = strips[s];

@@ -92,7 +92,8 @@ class TableMemory {
 class CoefficientTables {
  public:
   // Builds the tables of `map` (and `mask`, null for none), rows in parallel on `pool` (null:
-  // this thread); the same bits for any thread count and either SIMD copy.
+  // this thread); the same bits for any thread count and either SIMD copy, which the
+  // integrals use too.
   CoefficientTables(const NormalMap& map, const GainMask* mask, float mu_max, TableLayout layout,
                     const ThreadPool* pool, SimdCopy copy = SimdCopy::Auto);
 
@@ -196,9 +197,10 @@ class CoefficientTables {
   int cols_ = 0, rows_ = 0, sub_ = 1, angles_ = 0, group_ = 1, phases_ = 1;
   double tilt_error_ = 0.0;
   int map_width_ = 0, map_height_ = 0;
-  std::vector<float> dx_, dy_;  // the tabulated e, as two arrays (the build's loop vectorises)
-  std::vector<size_t> place_;   // where angle a lies among a point's values (see sums_)
-  std::vector<Vec2> units_;     // the same in double
+  SimdCopy copy_ = SimdCopy::Auto;  // the build's and the integrals' copy (the same bits)
+  std::vector<float> dx_, dy_;      // the tabulated e, as two arrays (the build's loop vectorises)
+  std::vector<size_t> place_;       // where angle a lies among a point's values (see sums_)
+  std::vector<Vec2> units_;         // the same in double
   double sin_step_ = 0.0;
   // Running sums along each row of cells (float: a row's values stay small): R(row, x) = the
   // integral over [0, x) of the row, at [(row (cols + 1) + x) angles + place], x in

@@ -216,8 +216,9 @@ TEST(PlanarTables, UniformSlopeGradientIntegratesToTheClosedForm) {
 }
 
 TEST(PlanarTables, BothSimdCopiesBuildTheSameBits) {
-  // The build's loop over angles has an AVX2 copy (math/simd.hpp); the tables (f and its tilt
-  // gradient) and the tilt error must not depend on which one ran.
+  // The build's loop over angles and the integrals' sums over strips have AVX2 copies
+  // (math/simd.hpp); the tables (f and its tilt gradient, their coarser levels), the tilt error
+  // and the integrals must not depend on which one ran.
   GeneratorSpec spec;
   spec.name = "concrete";
   spec.size = 64;
@@ -235,6 +236,15 @@ TEST(PlanarTables, BothSimdCopiesBuildTheSameBits) {
     a.integrate(polygon, which, x, channel);
     b.integrate(polygon, which, y, channel);
     EXPECT_EQ(x, y) << "channel " << channel;
+  }
+  EXPECT_EQ(a.levels(), b.levels());
+  EXPECT_EQ(a.gradientLevels(), b.gradientLevels());
+  for (int phase = 0; phase < a.phases(); ++phase) {
+    // Both phases side by side with the gradient: every width a contact reads.
+    std::vector<float> x(static_cast<size_t>(6 * a.group())), y(x.size());
+    EXPECT_EQ(a.integrateGroups(polygon, phase, 2, true, x.data()),
+              b.integrateGroups(polygon, phase, 2, true, y.data()));
+    EXPECT_EQ(x, y) << "phase " << phase;
   }
 }
 
