@@ -182,8 +182,8 @@ class CoefficientTables {
   // cells.
   double accumulateScaled(const Grid& grid, int scale, std::span<const Vec2> polygon,
                           std::span<const Range> ranges, float* out) const;
-  // The coarsest level needed for a footprint `height` f cells tall on `levels` (level 0 of
-  // cells `scale` f cells wide): its index.
+  // The finest of `levels` (level 0 of cells `scale` f cells wide) on which a footprint
+  // `height` f cells tall spans at most kMaxStripRows rows, else the coarsest: its index.
   static int levelFor(double height, const std::vector<Grid>& levels, int scale);
   // Appends coarser levels of levels[0] (cells `scale` of f's), each's sums appended to
   // `made`, while levelError times `weight` stays within kMaxLevelError.
