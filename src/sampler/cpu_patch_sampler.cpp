@@ -82,9 +82,7 @@ struct CpuPatchSampler::State {
         simd(opt.simd),
         planar(opt.path == PatchPath::Planar && !opt.contact_area.anyContactArea()),
         area(opt.contact_area),
-        heights(height_cache) {
-    found.reserve(kFoundTables);  // a step allocates nothing, whichever thread meets a texture
-  }
+        heights(height_cache) {}
   patch::MeshCache& meshes;         // the sampler's, shared by every thread's state
   const patch::TableCache& tables;  // the sampler's; built before the contacts are sampled
   SimdCopy simd;                    // the sampler's option, for every loop this state runs
@@ -123,37 +121,7 @@ struct CpuPatchSampler::State {
   void finishWithArea(const patch::Volume& volume, const patch::ShapeRange (&ranges)[2],
                       Contact& contact, const FrictionSettings& settings);
   void reserveLike(const State& other);
-  // tables.find through a small list of the tables this state has found (the cache is a
-  // map keyed by four values; a contact looks up one or two textures).
-  const patch::CoefficientTables* findTables(const patch::Material& material,
-                                             const FrictionSettings& settings);
-  struct FoundTables {
-    const NormalMap* map;
-    const GainMask* mask;
-    const patch::CoefficientTables* tables;
-  };
-  static constexpr size_t kFoundTables = 16;
-  std::vector<FoundTables> found;  // at most kFoundTables
-  float found_mu_max = -1.0f;
-  int found_directions = 0;
 };
-
-const patch::CoefficientTables* CpuPatchSampler::State::findTables(
-    const patch::Material& material, const FrictionSettings& settings) {
-  if (found_mu_max != settings.mu_max || found_directions != settings.directions) {
-    found.clear();
-    found_mu_max = settings.mu_max;
-    found_directions = settings.directions;
-  }
-  for (const FoundTables& f : found)
-    if (f.map == material.map && f.mask == material.mask) return f.tables;
-  const patch::CoefficientTables* t =
-      tables.find(material.map, material.mask, settings.mu_max, settings.directions);
-  // Only tables found are kept: a missing entry may be built before a later call.
-  if (t != nullptr && found.size() < kFoundTables)
-    found.push_back({material.map, material.mask, t});
-  return t;
-}
 
 void CpuPatchSampler::State::reserveLike(const State& other) {
   // Every buffer at least as large as other's, and other's directions when this state has
@@ -346,7 +314,8 @@ bool CpuPatchSampler::State::planarFace(const patch::Volume& volume, const patch
     out.face = &prim;
   }
   if (out.face == nullptr || out.face->material.map == nullptr) return true;
-  out.tables = findTables(out.face->material, settings);
+  out.tables = tables.find(out.face->material.map, out.face->material.mask, settings.mu_max,
+                           settings.directions);
   if (out.tables == nullptr) return false;  // a texture over the tables' budget is rasterised
   // A tilted face whose first-order shading may miss more than kMaxTiltError (in mu, after
   // its gain) is rasterised.

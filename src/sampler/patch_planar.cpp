@@ -1003,10 +1003,8 @@ const CoefficientTables* TableCache::get(const std::shared_ptr<const NormalMap>&
                                          const std::shared_ptr<const GainMask>& mask, float mu_max,
                                          int directions, const ThreadPool* pool) {
   const Key key{map.get(), mask.get(), mu_max, directions};
-  for (const auto& [k, tables] : first_)
-    if (k == key) return tables;
-  auto it = entries_.find(key);
-  if (it != entries_.end()) return it->second.tables.get();
+  bool known = false;
+  if (const CoefficientTables* tables = lookUp(key, known); known) return tables;
   Entry entry{SharedTables::instance().get(map, mask, mu_max, directions, pool), map, mask};
   const CoefficientTables* tables =
       entries_.emplace(key, std::move(entry)).first->second.tables.get();
@@ -1016,8 +1014,20 @@ const CoefficientTables* TableCache::get(const std::shared_ptr<const NormalMap>&
 
 const CoefficientTables* TableCache::find(const NormalMap* map, const GainMask* mask, float mu_max,
                                           int directions) const {
-  auto it = entries_.find(Key{map, mask, mu_max, directions});
-  return it == entries_.end() ? nullptr : it->second.tables.get();
+  bool known = false;
+  return lookUp(Key{map, mask, mu_max, directions}, known);
+}
+
+const CoefficientTables* TableCache::lookUp(const Key& key, bool& known) const {
+  for (const auto& [k, tables] : first_) {
+    if (k == key) {
+      known = true;
+      return tables;
+    }
+  }
+  auto it = entries_.find(key);
+  known = it != entries_.end();
+  return known ? it->second.tables.get() : nullptr;
 }
 
 std::vector<TextureTables> TableCache::list() const {

@@ -242,9 +242,12 @@ class TableCache {
   };
   std::map<Key, Entry> entries_;
   // The first entries made, scanned before the map: every fresh contact of a step looks up
-  // its shapes' few textures again. Entries are never removed, so neither are these.
+  // its shapes' few textures again, on every thread. Entries are never removed, so neither
+  // are these.
   static constexpr size_t kFirst = 16;
   std::vector<std::pair<Key, const CoefficientTables*>> first_;
+  // An entry's tables (null: over budget), `known` false when there is none.
+  const CoefficientTables* lookUp(const Key& key, bool& known) const;
 };
 
 // One surface of a planar contact: its face and what its coefficients need.
