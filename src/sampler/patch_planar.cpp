@@ -392,8 +392,8 @@ CoefficientTables::CoefficientTables(const NormalMap& map, const GainMask* mask,
   // Coarser levels while a footprint's mean on them stays within kMaxLevelError of the finest
   // level's (the gradient's times the largest tilt it is multiplied by).
   std::vector<std::vector<float>> made;
-  addCoarserLevels(f_levels_, 1, 1.0, made);
-  addCoarserLevels(gradient_levels_, coarse_, std::tan(kMaxTilt), made);
+  addCoarserLevels(f_levels_, 1, kMaxStripRows, 1.0, made);
+  addCoarserLevels(gradient_levels_, coarse_, kMaxGradientRows, std::tan(kMaxTilt), made);
   // Into one block (the levels from 1 of f, then of the gradient, as made).
   size_t floats = 0;
   for (const auto& level : made) floats += level.size();
@@ -427,7 +427,8 @@ size_t CoefficientTables::coarserFloats(int cols, int rows, size_t per_point) {
   return floats;
 }
 
-void CoefficientTables::addCoarserLevels(std::vector<Grid>& levels, int scale, double weight,
+void CoefficientTables::addCoarserLevels(std::vector<Grid>& levels, int scale, int max_rows,
+                                         double weight,
                                          std::vector<std::vector<float>>& made) const {
   // A coarse cell's mean is the mean of its 2 x 2 fine cells, so a coarse row's running sum
   // to point X is the mean of the two fine rows' sums to point 2 X (in coarse cells: a
@@ -448,22 +449,23 @@ void CoefficientTables::addCoarserLevels(std::vector<Grid>& levels, int scale, d
           out[x * m + k] = 0.25f * (a[2 * x * m + k] + b[2 * x * m + k]);
     }
     const int level = static_cast<int>(levels.size());
-    if (weight * levelError(levels.front(), coarse, scale, level) > kMaxLevelError) return;
+    if (weight * levelError(levels.front(), coarse, scale, level, max_rows) > kMaxLevelError)
+      return;
     levels.push_back(coarse);
     made.push_back(std::move(sums));  // the vector's data does not move
   }
 }
 
-double CoefficientTables::levelError(const Grid& finest, const Grid& coarse, int scale,
-                                     int level) const {
-  // Squares turned at random, as small as footprints that take this level (about kMaxStripRows
-  // / 2 of its rows tall), anywhere on the map: the largest difference from the finest
+double CoefficientTables::levelError(const Grid& finest, const Grid& coarse, int scale, int level,
+                                     int max_rows) const {
+  // Squares turned at random, as small as footprints that take this level (about max_rows / 2
+  // of its rows tall), anywhere on the map: the largest difference from the finest
   // level's mean at any angle. Random textures' boundary cells err each its own way; a
   // sawtooth's teeth err alike along a side (crawling_worm's skin: a 16-texel sawtooth, whose
   // contacts strayed up to 58 % from the raster path on cells of one texel).
   std::mt19937_64 random(12345);
   auto uniform = [&random] { return static_cast<double>(random() >> 11) * 0x1.0p-53; };
-  const double side = 0.5 * kMaxStripRows * (scale << level) / std::sqrt(2.0);
+  const double side = 0.5 * max_rows * (scale << level) / std::sqrt(2.0);
   const Range all{0, static_cast<int>(finest.per_point)};
   std::vector<float> fine_sums(finest.per_point), coarse_sums(finest.per_point);
   double worst = 0.0;
@@ -486,10 +488,11 @@ double CoefficientTables::levelError(const Grid& finest, const Grid& coarse, int
   return worst;
 }
 
-int CoefficientTables::levelFor(double height, const std::vector<Grid>& levels, int scale) {
+int CoefficientTables::levelFor(double height, const std::vector<Grid>& levels, int scale,
+                                int max_rows) {
   int level = 0;
   double rows = height / scale;
-  while (rows > kMaxStripRows && level + 1 < static_cast<int>(levels.size())) {
+  while (rows > max_rows && level + 1 < static_cast<int>(levels.size())) {
     rows *= 0.5;
     ++level;
   }
@@ -855,10 +858,10 @@ double CoefficientTables::integrateGroups(std::span<const Vec2> polygon, int pha
     ranges[1] = {second * group_, group_};
     used = 2;
   }
-  // A tall footprint on a coarser level (kMaxStripRows).
+  // A tall footprint on a coarser level (kMaxStripRows, kMaxGradientRows).
   double ymin = polygon.empty() ? 0.0 : polygon[0].y(), ymax = ymin;
   for (const Vec2& p : polygon) ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
-  const int level = levelFor(ymax - ymin, f_levels_, 1);
+  const int level = levelFor(ymax - ymin, f_levels_, 1, kMaxStripRows);
   const double area = accumulateScaled(f_levels_[static_cast<size_t>(level)], 1 << level, polygon,
                                        std::span<const Range>(ranges.data(), used), out);
   if (gradient) {
@@ -868,7 +871,7 @@ double CoefficientTables::integrateGroups(std::span<const Vec2> polygon, int pha
       width += static_cast<size_t>(ranges[r].len);
       ranges[used + r] = {ranges[r].begin + angles_, ranges[r].len};
     }
-    const int g = levelFor(ymax - ymin, gradient_levels_, coarse_);
+    const int g = levelFor(ymax - ymin, gradient_levels_, coarse_, kMaxGradientRows);
     accumulateScaled(gradient_levels_[static_cast<size_t>(g)], coarse_ << g, polygon,
                      std::span<const Range>(ranges.data(), 2 * used), out + width);
   }

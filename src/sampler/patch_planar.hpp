@@ -111,6 +111,10 @@ class CoefficientTables {
   // plaster, 80 texels across) then reads at most about this many strips, not one per texel
   // row. The boundary cells (error (2)) are larger by as much.
   static constexpr int kMaxStripRows = 16;
+  // The same for the gradient: it enters times the tilt's tangent (at most 0.01), so its levels
+  // pass the same check in mu (kMaxLevelError) on footprints a quarter as many rows tall, and
+  // a tilted face reads a few rows of it instead of as many as of f (whose cost it doubled).
+  static constexpr int kMaxGradientRows = 4;
   static constexpr int kMaxLevels = 4;
   // A level is used only while footprints read on it stay this close (in mu, before the
   // surface's gain) to the finest level, checked on kLevelChecks footprints at build time.
@@ -183,16 +187,17 @@ class CoefficientTables {
   double accumulateScaled(const Grid& grid, int scale, std::span<const Vec2> polygon,
                           std::span<const Range> ranges, float* out) const;
   // The finest of `levels` (level 0 of cells `scale` f cells wide) on which a footprint
-  // `height` f cells tall spans at most kMaxStripRows rows, else the coarsest: its index.
-  static int levelFor(double height, const std::vector<Grid>& levels, int scale);
+  // `height` f cells tall spans at most `max_rows` rows, else the coarsest: its index.
+  static int levelFor(double height, const std::vector<Grid>& levels, int scale, int max_rows);
   // Appends coarser levels of levels[0] (cells `scale` of f's), each's sums appended to
   // `made`, while levelError times `weight` stays within kMaxLevelError.
-  void addCoarserLevels(std::vector<Grid>& levels, int scale, double weight,
+  void addCoarserLevels(std::vector<Grid>& levels, int scale, int max_rows, double weight,
                         std::vector<std::vector<float>>& made) const;
   // The largest difference, in a footprint's mean at any angle, between `coarse` (level
   // `level` of `finest`, whose cells are `scale` of f's) and `finest`, over kLevelChecks
-  // turned squares as small as footprints that would read it.
-  double levelError(const Grid& finest, const Grid& coarse, int scale, int level) const;
+  // turned squares as small as footprints that would read it (levelFor with `max_rows`).
+  double levelError(const Grid& finest, const Grid& coarse, int scale, int level,
+                    int max_rows) const;
 
   int cols_ = 0, rows_ = 0, sub_ = 1, angles_ = 0, group_ = 1, phases_ = 1;
   double tilt_error_ = 0.0;

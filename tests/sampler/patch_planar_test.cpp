@@ -107,6 +107,51 @@ TEST(PlanarTables, CoarserLevelsReadTallFootprintsWithinTheirBound) {
   }
 }
 
+TEST(PlanarTables, TheGradientsLevelsReadFootprintsWithinTheirBound) {
+  // The gradient enters times the tilt's tangent (at most tan(kMaxTilt)), so it is read on
+  // levels where a footprint spans at most kMaxGradientRows rows: turned squares 4 to 48 cells
+  // tall, read as a tilted face's contact reads them, against the finest gradient cells, within
+  // kMaxLevelError in mu at the largest tilt, at every angle and in both components. Acrylic
+  // keeps every level; the worm's sawtooth, whose coarse cells err alike along a side, does not
+  // (read on all of them, these squares stray beyond the bound).
+  const auto acrylic = generated("acrylic", 128);
+  const auto sawtooth = generated("sawtooth", 64, {{"period", "16"}});
+  for (const auto& map : {acrylic, sawtooth}) {
+    const patch::CoefficientTables tables(
+        *map, nullptr, 4.0f, patch::tableLayout(map->width(), map->height(), 4), nullptr);
+    if (map == acrylic)
+      EXPECT_EQ(tables.gradientLevels(), patch::CoefficientTables::kMaxLevels);
+    else
+      EXPECT_LT(tables.gradientLevels(), patch::CoefficientTables::kMaxLevels);
+    const int group = tables.group(), phases = tables.phases();
+    std::vector<int> which(static_cast<size_t>(tables.angles()));
+    for (int a = 0; a < tables.angles(); ++a) which[static_cast<size_t>(a)] = a;
+    const double tan_max = std::tan(patch::kMaxTilt);
+    for (int k = 0; k < 12; ++k) {
+      const double side = 4.0 + 4.0 * k, turn = 0.61 * k;
+      const Vec2 centre(9.1 * k, 13.4 * k), along(std::cos(turn), std::sin(turn));
+      const Vec2 across(-along.y(), along.x());
+      const std::vector<Vec2> square = {
+          centre - 0.5 * side * (along + across), centre + 0.5 * side * (along - across),
+          centre + 0.5 * side * (along + across), centre - 0.5 * side * (along - across)};
+      for (int channel = 1; channel <= 2; ++channel) {
+        std::vector<double> finest(which.size());
+        const double area = tables.integrate(square, which, finest, channel);
+        std::vector<float> read(static_cast<size_t>(3 * group));
+        for (int p = 0; p < phases; ++p) {
+          EXPECT_NEAR(tables.integrateGroups(square, p, 1, true, read.data()), area, 1e-9 * area);
+          for (int i = 0; i < group; ++i) {
+            const auto a = static_cast<size_t>(i * phases + p);
+            EXPECT_NEAR(tan_max * read[static_cast<size_t>(channel * group + i)] / area,
+                        tan_max * finest[a] / area, patch::CoefficientTables::kMaxLevelError)
+                << "square " << k << " channel " << channel << " angle " << a;
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(PlanarTables, ASawtoothKeepsItsFinestCells) {
   // crawling_worm's skin: on cells of one texel a footprint's side along the teeth errs alike
   // at every tooth (up to 58 % of the raster path's coefficient); no coarser level passes.
