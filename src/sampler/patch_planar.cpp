@@ -11,6 +11,7 @@
 #include <new>
 #include <random>
 #include <string_view>
+#include <type_traits>
 
 #include "asperity/error.hpp"
 #include "asperity/friction/fragment_model.hpp"
@@ -148,6 +149,13 @@ class Chains {
     lo = xAt(left_, y), hi = xAt(right_, y);
     if (lo > hi) std::swap(lo, hi);
   }
+  // A current edge as a line: x at height y is x0 + (y - y0) slope (span's arithmetic).
+  struct Line {
+    double x0, y0, slope;
+    double at(double y) const { return x0 + (y - y0) * slope; }
+  };
+  Line left() const { return lineOf(left_); }
+  Line right() const { return lineOf(right_); }
 
  private:
   struct Chain {
@@ -156,6 +164,7 @@ class Chains {
     bool set;
   };
   const Vec2& at(int k) const { return v_[static_cast<size_t>(k)]; }
+  Line lineOf(const Chain& c) const { return {at(c.at).x(), at(c.at).y(), c.slope}; }
   void advance(Chain& c, double y) const {
     bool moved = false;
     while (c.at != top_ && at(c.next).y() <= y) {
@@ -776,6 +785,12 @@ double CoefficientTables::accumulate(const Grid& grid, std::span<const Vec2> pol
     return SpanEnd{row + static_cast<size_t>(c) * m, static_cast<float>(rem - c),
                    static_cast<float>(repeats)};
   };
+  // The same where x lies in [0, cols - 1) give or take rounding (the polygon within one
+  // repeat, as nearly all are): the same bits, without the repeats' tests.
+  auto endWithin = [m](const float* row, double x) {
+    const int c = static_cast<int>(x);
+    return SpanEnd{row + static_cast<size_t>(c) * m, static_cast<float>(x - c), 0.0f};
+  };
   // Strips are gathered first and their sums read after, range by range, W floats at a time
   // in registers (addStrips).
   std::array<Strip, 64> strips;
@@ -799,29 +814,47 @@ double CoefficientTables::accumulate(const Grid& grid, std::span<const Vec2> pol
     gathered = 0;
     repeats = false;
   };
-  const auto first = static_cast<long long>(std::floor(ymin));
-  int row_index = positiveMod(first, rows);
-  for (long long r = first; static_cast<double>(r) < ymax; ++r) {
-    const float* row = grid.table + static_cast<size_t>(row_index) * line;
-    row_index = row_index + 1 == rows ? 0 : row_index + 1;
-    double y0 = std::max(static_cast<double>(r), ymin);
-    const double row_end = std::min(static_cast<double>(r + 1), ymax);
-    while (y0 < row_end) {
-      chains.advance(y0);
-      const double y1 = std::min(row_end, chains.nextVertexY());
-      if (!(y1 > y0)) break;  // at the top
-      double lo = 0.0, hi = 0.0;
-      chains.span(0.5 * (y0 + y1), lo, hi);
-      if (hi > lo) {
+  // Band by band (between the heights of two vertices both chains are on one edge each), and
+  // within a band row by row of cells: a strip is a row's part of a band, in increasing height
+  // (so the sums add in the same order as row by row).
+  double xmax = 0.0;
+  for (int k = 0; k < n; ++k) xmax = std::max(xmax, v[static_cast<size_t>(k)].x());
+  auto gather = [&](auto within) {
+    double y = ymin;
+    while (y < ymax) {
+      chains.advance(y);
+      const double top = chains.nextVertexY();
+      if (!(top > y)) break;  // at the top
+      const Chains::Line left = chains.left(), right = chains.right();
+      auto r = static_cast<long long>(std::floor(y));
+      int row_index = positiveMod(r, rows);
+      for (; static_cast<double>(r) < top; ++r) {
+        const float* row = grid.table + static_cast<size_t>(row_index) * line;
+        row_index = row_index + 1 == rows ? 0 : row_index + 1;
+        const double y0 = std::max(static_cast<double>(r), y);
+        const double y1 = std::min(static_cast<double>(r + 1), top);
+        const double mid = 0.5 * (y0 + y1);
+        double lo = left.at(mid), hi = right.at(mid);
+        if (lo > hi) std::swap(lo, hi);
+        if (!(hi > lo)) continue;
         Strip& st = strips[gathered++];
-        st = {endOf(row, lo), endOf(row, hi), row + static_cast<size_t>(cols) * m,
-              static_cast<float>(y1 - y0)};
-        repeats = repeats || st.b.repeats != st.a.repeats;
+        if constexpr (decltype(within)::value) {
+          st = {endWithin(row, lo), endWithin(row, hi), row + static_cast<size_t>(cols) * m,
+                static_cast<float>(y1 - y0)};
+        } else {
+          st = {endOf(row, lo), endOf(row, hi), row + static_cast<size_t>(cols) * m,
+                static_cast<float>(y1 - y0)};
+          repeats = repeats || st.b.repeats != st.a.repeats;
+        }
         if (gathered == strips.size()) flush();
       }
-      y0 = y1;
+      y = top;
     }
-  }
+  };
+  if (xmax < cols - 1)
+    gather(std::true_type{});
+  else
+    gather(std::false_type{});
   flush();
   return 0.5 * std::abs(area);
 }
