@@ -678,10 +678,17 @@ struct Strip {
   float h;
 };
 
-// The strips' h (R(b) - R(a)) over W values from `begin` of each point, added to out.
+// The whole repeats a strip spans (a span past the row's end): h times their number times
+// the row's sums over one repeat.
+inline float repeatWeight(const Strip& st) {
+  return st.h * (st.b.repeats - st.a.repeats);
+}
+
+// The strips' h (R(b) - R(a)) over W values from `begin` of each point, added to out; with
+// `repeats`, then each strip's whole repeats (repeatWeight), strip after strip.
 template <int W>
 [[gnu::always_inline]] inline void addStrips(const Strip* strips, size_t count, size_t stride,
-                                             int begin, float* out) {
+                                             int begin, bool repeats, float* out) {
   float acc[W] = {};
   for (size_t s = 0; s < count; ++s) {
     const Strip& st = strips[s];
@@ -694,24 +701,32 @@ template <int W>
       acc[k] += h * (vb - va);
     }
   }
-  for (int k = 0; k < W; ++k) out[k] += acc[k];
+  for (int k = 0; k < W; ++k) acc[k] += out[k];
+  for (size_t s = 0; s < count && repeats; ++s) {
+    const float weight = repeatWeight(strips[s]);
+    if (weight == 0.0f) continue;
+    const float* __restrict total = strips[s].total + begin;
+    for (int k = 0; k < W; ++k) acc[k] += weight * total[k];
+  }
+  for (int k = 0; k < W; ++k) out[k] = acc[k];
 }
 
 // addStrips<W> for the widths a contact reads (N or 2N floats); false for any other.
 [[gnu::always_inline]] inline bool addStripsOfWidth(const Strip* strips, size_t count,
-                                                    size_t stride, int begin, int len, float* out) {
+                                                    size_t stride, int begin, int len, bool repeats,
+                                                    float* out) {
   switch (len) {
     case 4:
-      addStrips<4>(strips, count, stride, begin, out);
+      addStrips<4>(strips, count, stride, begin, repeats, out);
       return true;
     case 8:
-      addStrips<8>(strips, count, stride, begin, out);
+      addStrips<8>(strips, count, stride, begin, repeats, out);
       return true;
     case 16:
-      addStrips<16>(strips, count, stride, begin, out);
+      addStrips<16>(strips, count, stride, begin, repeats, out);
       return true;
     case 32:
-      addStrips<32>(strips, count, stride, begin, out);
+      addStrips<32>(strips, count, stride, begin, repeats, out);
       return true;
     default:
       return false;
@@ -721,19 +736,19 @@ template <int W>
 #if ASPERITY_AVX2_COPIES
 // The AVX2 copy: eight floats an operation, and no FMA, so the same bits as the baseline's.
 ASPERITY_TARGET_AVX2 bool addStripsAvx2(const Strip* strips, size_t count, size_t stride, int begin,
-                                        int len, float* out) {
-  return addStripsOfWidth(strips, count, stride, begin, len, out);
+                                        int len, bool repeats, float* out) {
+  return addStripsOfWidth(strips, count, stride, begin, len, repeats, out);
 }
 #endif
 
 void addStrips(bool avx2, const Strip* strips, size_t count, size_t stride, int begin, int len,
-               float* out) {
+               bool repeats, float* out) {
 #if ASPERITY_AVX2_COPIES
-  if (avx2 && addStripsAvx2(strips, count, stride, begin, len, out)) return;
+  if (avx2 && addStripsAvx2(strips, count, stride, begin, len, repeats, out)) return;
 #else
   (void)avx2;
 #endif
-  if (addStripsOfWidth(strips, count, stride, begin, len, out)) return;
+  if (addStripsOfWidth(strips, count, stride, begin, len, repeats, out)) return;
   for (size_t s = 0; s < count; ++s) {
     const Strip& st = strips[s];
     const float* a0 = st.a.cell + begin;
@@ -744,6 +759,8 @@ void addStrips(bool avx2, const Strip* strips, size_t count, size_t stride, int 
       out[k] += st.h * (vb - va);
     }
   }
+  for (size_t s = 0; s < count && repeats; ++s)
+    for (int k = 0; k < len; ++k) out[k] += repeatWeight(strips[s]) * strips[s].total[begin + k];
 }
 
 }  // namespace
@@ -800,15 +817,7 @@ double CoefficientTables::accumulate(const Grid& grid, std::span<const Vec2> pol
   auto flush = [&] {
     float* o = out;
     for (const Range& r : ranges) {
-      addStrips(avx2, strips.data(), gathered, m, r.begin, r.len, o);
-      if (repeats) {
-        for (size_t s = 0; s < gathered; ++s) {
-          const Strip& st = strips[s];
-          const float reps = st.b.repeats - st.a.repeats;
-          if (reps == 0.0f) continue;
-          for (int k = 0; k < r.len; ++k) o[k] += st.h * reps * st.total[r.begin + k];
-        }
-      }
+      addStrips(avx2, strips.data(), gathered, m, r.begin, r.len, repeats, o);
       o += r.len;
     }
     gathered = 0;
