@@ -114,34 +114,33 @@ namespace {
 bool extentWithinDepth(const Volume& volume, double widen, const PolygonVertex* vtx, int count,
                        std::array<double, 2>& lo, std::array<double, 2>& hi) {
   const double h = volume.half_depth + widen + 1e-9 * volume.width;
-  // Sutherland-Hodgman against z <= h, then -z <= h (a convex polygon of up to 4 corners
-  // gains at most one corner per plane).
-  std::array<Vec3, 8> points, clipped;
-  int n = count;
-  for (int k = 0; k < count; ++k) points[static_cast<size_t>(k)] = vtx[k].p;
-  for (const double sign : {1.0, -1.0}) {
-    int m = 0;
-    for (int k = 0; k < n; ++k) {
-      const Vec3& p = points[static_cast<size_t>(k)];
-      const Vec3& q = points[static_cast<size_t>((k + 1) % n)];
-      const double dp = sign * p.z() - h, dq = sign * q.z() - h;
-      if (dp <= 0.0) clipped[static_cast<size_t>(m++)] = p;
-      if ((dp <= 0.0) != (dq <= 0.0))
-        clipped[static_cast<size_t>(m++)] = p + (q - p) * (dp / (dp - dq));
-    }
-    n = m;
-    points.swap(clipped);
+  // Sutherland-Hodgman against z <= h (a convex polygon of up to 4 corners gains at most one
+  // corner), then against -z <= h with the kept corners going straight into the extent.
+  std::array<Vec3, 8> kept;
+  int n = 0;
+  for (int k = 0; k < count; ++k) {
+    const int next = k + 1 == count ? 0 : k + 1;
+    const Vec3& p = vtx[k].p;
+    const Vec3& q = vtx[next].p;
+    const double dp = p.z() - h, dq = q.z() - h;
+    if (dp <= 0.0) kept[static_cast<size_t>(n++)] = p;
+    if ((dp <= 0.0) != (dq <= 0.0)) kept[static_cast<size_t>(n++)] = p + (q - p) * (dp / (dp - dq));
   }
-  if (n == 0) return false;
   lo = {kInf, kInf}, hi = {-kInf, -kInf};
+  auto grow = [&](const Vec3& p) {
+    lo[0] = std::min(lo[0], p.x()), hi[0] = std::max(hi[0], p.x());
+    lo[1] = std::min(lo[1], p.y()), hi[1] = std::max(hi[1], p.y());
+  };
+  bool any = false;
   for (int k = 0; k < n; ++k) {
-    for (int axis = 0; axis < 2; ++axis) {
-      const double v = points[static_cast<size_t>(k)][axis];
-      lo[static_cast<size_t>(axis)] = std::min(lo[static_cast<size_t>(axis)], v);
-      hi[static_cast<size_t>(axis)] = std::max(hi[static_cast<size_t>(axis)], v);
-    }
+    const int next = k + 1 == n ? 0 : k + 1;
+    const Vec3& p = kept[static_cast<size_t>(k)];
+    const Vec3& q = kept[static_cast<size_t>(next)];
+    const double dp = -p.z() - h, dq = -q.z() - h;
+    if (dp <= 0.0) grow(p), any = true;
+    if ((dp <= 0.0) != (dq <= 0.0)) grow(p + (q - p) * (dp / (dp - dq))), any = true;
   }
-  return true;
+  return any;
 }
 
 // Whether some pixel centre lies in [a, b] along one axis, give or take far more than rounding
