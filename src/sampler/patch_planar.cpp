@@ -74,16 +74,20 @@ void spanAt(std::span<const Vec2> poly, double y, double& lo, double& hi) {
   }
 }
 
-// Sutherland-Hodgman against a x + b y + c >= 0; in and out may not alias.
+// Sutherland-Hodgman against a x + b y + c >= 0; in and out may not alias. Each vertex's
+// a x + b y + c is taken once.
 int clipHalfPlane(const Vec2* in, int count, double a, double b, double c, Vec2* out) {
   int n = 0;
+  const double first = a * in[0].x() + b * in[0].y() + c;
+  double ep = first;
   for (int k = 0; k < count; ++k) {
+    const int next = k + 1 == count ? 0 : k + 1;
     const Vec2& p = in[k];
-    const Vec2& q = in[(k + 1) % count];
-    const double ep = a * p.x() + b * p.y() + c;
-    const double eq = a * q.x() + b * q.y() + c;
+    const Vec2& q = in[next];
+    const double eq = next == 0 ? first : a * q.x() + b * q.y() + c;
     if (ep >= 0.0) out[n++] = p;
     if ((ep >= 0.0) != (eq >= 0.0)) out[n++] = p + (ep / (ep - eq)) * (q - p);
+    ep = eq;
   }
   return n;
 }
