@@ -48,6 +48,8 @@ int facingBoxFaces(const Shape& box, const Placement& pl, Side side, std::array<
 // repeats per metre, the surface's texture rotation) and the face's tangent frame.
 std::array<FaceCorner, 4> boxFaceCorners(const Shape& box, const Placement& pl, const BoxFace& face,
                                          double scale);
+// The same corners' positions alone (the same bits).
+std::array<Vec3, 4> boxFacePositions(const Placement& pl, const BoxFace& face);
 
 // A plane shape {n . x = offset} that faces the other body, in the contact frame.
 struct FacingPlane {

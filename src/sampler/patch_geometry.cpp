@@ -42,6 +42,27 @@ void shiftUv(PolygonVertex* v, int count) {
   for (int k = 0; k < count; ++k) v[k].u -= fu, v[k].v -= fv;
 }
 
+// A new primitive bounded from its corners' positions (boundPlanar; reversed for A as
+// pushPolygon reverses its vertices); false, and none added, when it covers no pixel centre.
+bool boundPolygon(const Volume& volume, Vec3* corners, int count, SurfaceRaster& raster) {
+  if (raster.side == Side::A) std::reverse(corners, corners + count);
+  raster.planars.emplace_back();
+  if (boundPlanar(volume, corners, count, raster.planars.back(), raster.depth)) return true;
+  raster.planars.pop_back();
+  return false;
+}
+
+// The primitive boundPolygon added, finished from the same corners with their attributes (as
+// pushPolygon would have made it), and rasterised unless only collecting.
+void finishPolygon(const Volume& volume, PolygonVertex* v, int count, bool smooth,
+                   const Material& material, SurfaceRaster& raster) {
+  if (raster.side == Side::A) std::reverse(v, v + count);
+  shiftUv(v, count);
+  finishPlanar(v, count, smooth, material, raster.planars.back());
+  const auto id = static_cast<int32_t>(raster.planars.size() - 1);
+  if (!raster.collect_only) rasterisePlanar(volume, raster.planars.back(), id, raster);
+}
+
 // Counter-clockwise seen from +n: B's front faces already are, A's are reversed.
 void pushPolygon(const Volume& volume, PolygonVertex* v, int count, bool smooth,
                  const Material& material, SurfaceRaster& raster) {
@@ -90,10 +111,13 @@ void rasteriseBox(const Volume& volume, const Shape& shape, const Placement& pl,
     const BoxFace& face = faces[static_cast<size_t>(f)];
     if (faceMissesVolume(volume, pl.m * face.centre + pl.o, pl.m * face.et, pl.m * face.eb, raster))
       continue;
+    // Positions first: a face they reject (a side seen edge-on) needs no uv or frame.
+    std::array<Vec3, 4> positions = boxFacePositions(pl, face);
+    if (!boundPolygon(volume, positions.data(), 4, raster)) continue;
     const std::array<FaceCorner, 4> corners = boxFaceCorners(shape, pl, face, scale);
     PolygonVertex v[4];
     for (size_t k = 0; k < 4; ++k) v[k] = polygonVertex(corners[k]);
-    pushPolygon(volume, v, 4, false, materialOf(shape), raster);
+    finishPolygon(volume, v, 4, false, materialOf(shape), raster);
   }
 }
 

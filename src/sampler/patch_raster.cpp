@@ -111,7 +111,7 @@ namespace {
 
 // The polygon's part within the depth clip widened by `widen`, |z| <= h + widen (and far beyond
 // rounding): its extent in x and y, as [lo, hi] per axis. False when no part is within.
-bool extentWithinDepth(const Volume& volume, double widen, const PolygonVertex* vtx, int count,
+bool extentWithinDepth(const Volume& volume, double widen, const Vec3* corners, int count,
                        std::array<double, 2>& lo, std::array<double, 2>& hi) {
   const double h = volume.half_depth + widen + 1e-9 * volume.width;
   // Sutherland-Hodgman against z <= h (a convex polygon of up to 4 corners gains at most one
@@ -120,8 +120,8 @@ bool extentWithinDepth(const Volume& volume, double widen, const PolygonVertex* 
   int n = 0;
   for (int k = 0; k < count; ++k) {
     const int next = k + 1 == count ? 0 : k + 1;
-    const Vec3& p = vtx[k].p;
-    const Vec3& q = vtx[next].p;
+    const Vec3& p = corners[k];
+    const Vec3& q = corners[next];
     const double dp = p.z() - h, dq = q.z() - h;
     if (dp <= 0.0) kept[static_cast<size_t>(n++)] = p;
     if ((dp <= 0.0) != (dq <= 0.0)) kept[static_cast<size_t>(n++)] = p + (q - p) * (dp / (dp - dq));
@@ -163,10 +163,10 @@ bool noCentreWithin(const Volume& volume, const std::array<double, 2>& lo,
 // Notes rejecting a face seen nearly edge-on because no pixel centre lies in its part within
 // the clip: its fragments beyond the clip may move in by the clip's own margin, 0.005 w
 // (SPEC 3), when the face is still rejected with the clip that much deeper, else unknown.
-void noteEdgeOn(const Volume& volume, const PolygonVertex* vtx, int count, DepthMargins& depth) {
+void noteEdgeOn(const Volume& volume, const Vec3* corners, int count, DepthMargins& depth) {
   const double widen = 0.005 * volume.width;
   std::array<double, 2> lo{}, hi{};
-  if (!extentWithinDepth(volume, widen, vtx, count, lo, hi) || noCentreWithin(volume, lo, hi))
+  if (!extentWithinDepth(volume, widen, corners, count, lo, hi) || noCentreWithin(volume, lo, hi))
     depth.limitOutside(widen);
   else
     depth.forget();
@@ -175,12 +175,12 @@ void noteEdgeOn(const Volume& volume, const PolygonVertex* vtx, int count, Depth
 // The polygon's pixel bounds in `out`; false when it surely covers no pixel centre: entirely
 // beyond the depth clip or the footprint, or seen so nearly edge-on that its band within the
 // clip holds no centre (decisions noted in `depth`).
-bool boundPixels(const Volume& volume, const PolygonVertex* vtx, int count, Planar& out,
+bool boundPixels(const Volume& volume, const Vec3* corners, int count, Planar& out,
                  DepthMargins& depth) {
   // Reject: entirely beyond the depth clip or the footprint.
   double zmin = kInf, zmax = -kInf, xmin = kInf, xmax = -kInf, ymin = kInf, ymax = -kInf;
   for (int k = 0; k < count; ++k) {
-    const Vec3& p = vtx[k].p;
+    const Vec3& p = corners[k];
     zmin = std::min(zmin, p.z()), zmax = std::max(zmax, p.z());
     xmin = std::min(xmin, p.x()), xmax = std::max(xmax, p.x());
     ymin = std::min(ymin, p.y()), ymax = std::max(ymax, p.y());
@@ -197,9 +197,9 @@ bool boundPixels(const Volume& volume, const PolygonVertex* vtx, int count, Plan
   if (out.i1 - out.i0 <= 1 || out.j1 - out.j0 <= 1) {
     std::array<double, 2> lo{xmin, ymin}, hi{xmax, ymax};
     const bool clipped = zmin < -h || zmax > h;
-    if ((clipped && !extentWithinDepth(volume, 0.0, vtx, count, lo, hi)) ||
+    if ((clipped && !extentWithinDepth(volume, 0.0, corners, count, lo, hi)) ||
         noCentreWithin(volume, lo, hi)) {
-      if (clipped) noteEdgeOn(volume, vtx, count, depth);
+      if (clipped) noteEdgeOn(volume, corners, count, depth);
       return false;
     }
   }
@@ -240,21 +240,36 @@ void fitAttributes(const PolygonVertex* vtx, bool smooth, const Eigen::Matrix2d&
   setFloatUv(out);
 }
 
+// The (x, y) differences of the second and third corners from the first, as columns.
+Eigen::Matrix2d differencesOf(const Vec3* p) {
+  Eigen::Matrix2d m;
+  m << p[1].x() - p[0].x(), p[2].x() - p[0].x(), p[1].y() - p[0].y(), p[2].y() - p[0].y();
+  return m;
+}
+
 }  // namespace
+
+bool boundPlanar(const Volume& volume, const Vec3* corners, int count, Planar& out,
+                 DepthMargins& depth) {
+  if (!boundPixels(volume, corners, count, out, depth)) return false;
+  // Edge-on (zero projected area) primitives cover no pixel centre.
+  return differencesOf(corners).determinant() > 1e-30 * volume.width * volume.width;
+}
+
+void finishPlanar(const PolygonVertex* vtx, int count, bool smooth, const Material& material,
+                  Planar& out) {
+  setEdges(vtx, count, out);
+  const Vec3 first[3] = {vtx[0].p, vtx[1].p, vtx[2].p};
+  fitAttributes(vtx, smooth, differencesOf(first).inverse(), out);
+  out.material = material;
+}
 
 bool makePlanar(const Volume& volume, const PolygonVertex* vtx, int count, bool smooth,
                 const Material& material, Planar& out, DepthMargins& depth) {
-  if (!boundPixels(volume, vtx, count, out, depth)) return false;
-  // Edge-on (zero projected area) primitives cover no pixel centre.
-  const Vec3 &p0 = vtx[0].p, &p1 = vtx[1].p, &p2 = vtx[2].p;
-  Eigen::Matrix2d m;
-  m << p1.x() - p0.x(), p2.x() - p0.x(), p1.y() - p0.y(), p2.y() - p0.y();
-  const double det = m.determinant();
-  if (!(det > 1e-30 * volume.width * volume.width)) return false;
-  const Eigen::Matrix2d inv = m.inverse();
-  setEdges(vtx, count, out);
-  fitAttributes(vtx, smooth, inv, out);
-  out.material = material;
+  std::array<Vec3, kMaxPolygonCorners> corners;
+  for (int k = 0; k < count; ++k) corners[static_cast<size_t>(k)] = vtx[k].p;
+  if (!boundPlanar(volume, corners.data(), count, out, depth)) return false;
+  finishPlanar(vtx, count, smooth, material, out);
   return true;
 }
 

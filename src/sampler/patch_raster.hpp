@@ -183,6 +183,17 @@ void setFloatUv(Planar& prim);
 
 bool makePlanar(const Volume& volume, const PolygonVertex* vertices, int count, bool smooth,
                 const Material& material, Planar& out, DepthMargins& depth);
+inline constexpr int kMaxPolygonCorners = 4;
+
+// makePlanar in two steps, for a caller that has the corners' positions before their
+// attributes (a box's sides seen edge-on are mostly rejected): boundPlanar sets out's pixel
+// bounds and makes the reject tests and their depth notes from the positions alone (false:
+// the polygon covers no pixel centre); finishPlanar then sets its edges, depth, uv and frame
+// from the same corners with their attributes.
+bool boundPlanar(const Volume& volume, const Vec3* corners, int count, Planar& out,
+                 DepthMargins& depth);
+void finishPlanar(const PolygonVertex* vertices, int count, bool smooth, const Material& material,
+                  Planar& out);
 
 // The pixel index range [lo, hi] whose centres may lie in [a, b] along one axis (clamped to
 // the grid; empty when lo > hi).
