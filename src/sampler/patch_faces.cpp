@@ -32,22 +32,22 @@ int facingBoxFaces(const Shape& box, const Placement& pl, Side side, std::array<
 namespace {
 
 // Corner k of a box face in the box frame, counter-clockwise seen from outside.
-Vec3 localCorner(const BoxFace& face, size_t k) {
-  static constexpr double su[4] = {-1, 1, 1, -1}, sv[4] = {-1, -1, 1, 1};
-  return face.centre + su[k] * face.et + sv[k] * face.eb;
+constexpr double kCornerT[4] = {-1, 1, 1, -1}, kCornerB[4] = {-1, -1, 1, 1};
+[[gnu::always_inline]] inline Vec3 localCorner(const BoxFace& face, size_t k) {
+  return face.centre + kCornerT[k] * face.et + kCornerB[k] * face.eb;
 }
 
 }  // namespace
 
 std::array<FaceCorner, 4> boxFaceCorners(const Shape& box, const Placement& pl, const BoxFace& face,
-                                         double scale) {
+                                         double scale, const std::array<Vec3, 4>& positions) {
   const SurfaceFrame tex = rotateTexture(face.frame, box.surface.texture_rotation);
   // uv through the face's (rotated) texture axes; the frame is the face's, rotated.
   const Vec3 tc = pl.m * tex.t, bc = pl.m * tex.b;
   std::array<FaceCorner, 4> corners;
   for (size_t k = 0; k < 4; ++k) {
     const Vec3 p = localCorner(face, k);
-    corners[k] = {pl.m * p + pl.o, scale * p.dot(tex.t), scale * p.dot(tex.b), tc, bc, face.normal};
+    corners[k] = {positions[k], scale * p.dot(tex.t), scale * p.dot(tex.b), tc, bc, face.normal};
   }
   return corners;
 }

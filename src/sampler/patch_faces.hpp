@@ -44,12 +44,13 @@ struct BoxFace {
 // how many of `out` are set.
 int facingBoxFaces(const Shape& box, const Placement& pl, Side side, std::array<BoxFace, 6>& out);
 
-// A box face's four corners, counter-clockwise seen from outside the box, with uv (`scale`
-// repeats per metre, the surface's texture rotation) and the face's tangent frame.
-std::array<FaceCorner, 4> boxFaceCorners(const Shape& box, const Placement& pl, const BoxFace& face,
-                                         double scale);
-// The same corners' positions alone (the same bits).
+// A box face's four corners' positions (contact frame), counter-clockwise seen from outside
+// the box.
 std::array<Vec3, 4> boxFacePositions(const Placement& pl, const BoxFace& face);
+// The same corners (`positions` from boxFacePositions) with uv (`scale` repeats per metre, the
+// surface's texture rotation) and the face's tangent frame.
+std::array<FaceCorner, 4> boxFaceCorners(const Shape& box, const Placement& pl, const BoxFace& face,
+                                         double scale, const std::array<Vec3, 4>& positions);
 
 // A plane shape {n . x = offset} that faces the other body, in the contact frame.
 struct FacingPlane {

@@ -112,9 +112,10 @@ void rasteriseBox(const Volume& volume, const Shape& shape, const Placement& pl,
     if (faceMissesVolume(volume, pl.m * face.centre + pl.o, pl.m * face.et, pl.m * face.eb, raster))
       continue;
     // Positions first: a face they reject (a side seen edge-on) needs no uv or frame.
-    std::array<Vec3, 4> positions = boxFacePositions(pl, face);
-    if (!boundPolygon(volume, positions.data(), 4, raster)) continue;
-    const std::array<FaceCorner, 4> corners = boxFaceCorners(shape, pl, face, scale);
+    const std::array<Vec3, 4> positions = boxFacePositions(pl, face);
+    std::array<Vec3, 4> bounded = positions;
+    if (!boundPolygon(volume, bounded.data(), 4, raster)) continue;
+    const std::array<FaceCorner, 4> corners = boxFaceCorners(shape, pl, face, scale, positions);
     PolygonVertex v[4];
     for (size_t k = 0; k < 4; ++k) v[k] = polygonVertex(corners[k]);
     finishPolygon(volume, v, 4, false, materialOf(shape), raster);

@@ -138,7 +138,9 @@ void boxTriangles(const Volume& volume, const Shape& shape, const Placement& pl,
   std::array<BoxFace, 6> faces;
   const int count = facingBoxFaces(shape, pl, side, faces);
   for (int f = 0; f < count; ++f) {
-    const std::array<Corner, 4> q = boxFaceCorners(shape, pl, faces[static_cast<size_t>(f)], scale);
+    const BoxFace& face = faces[static_cast<size_t>(f)];
+    const std::array<Corner, 4> q =
+        boxFaceCorners(shape, pl, face, scale, boxFacePositions(pl, face));
     // The quad's four sides are tested exactly; its diagonal is left to the rasteriser.
     emit(volume, q[0], q[1], q[2], 0b011u, out);
     emit(volume, q[0], q[2], q[3], 0b110u, out);
