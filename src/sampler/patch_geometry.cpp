@@ -42,8 +42,12 @@ void shiftUv(PolygonVertex* v, int count) {
   for (int k = 0; k < count; ++k) v[k].u -= fu, v[k].v -= fv;
 }
 
-// A new primitive bounded from its corners' positions (boundPlanar; reversed for A as
-// pushPolygon reverses its vertices); false, and none added, when it covers no pixel centre.
+// A polygon becomes a primitive in two steps (boundPlanar, finishPlanar), so that a box's face
+// can be rejected from its corners' positions before its uv and frame are made. Corners go
+// counter-clockwise seen from +n: B's front faces already are, A's are reversed.
+
+// A new primitive bounded from its corners' positions (reordered as above); false, and none
+// added, when it covers no pixel centre.
 bool boundPolygon(const Volume& volume, Vec3* corners, int count, SurfaceRaster& raster) {
   if (raster.side == Side::A) std::reverse(corners, corners + count);
   raster.planars.emplace_back();
@@ -52,8 +56,8 @@ bool boundPolygon(const Volume& volume, Vec3* corners, int count, SurfaceRaster&
   return false;
 }
 
-// The primitive boundPolygon added, finished from the same corners with their attributes (as
-// pushPolygon would have made it), and rasterised unless only collecting.
+// The primitive boundPolygon added, finished from the same corners with their attributes, and
+// rasterised unless only collecting.
 void finishPolygon(const Volume& volume, PolygonVertex* v, int count, bool smooth,
                    const Material& material, SurfaceRaster& raster) {
   if (raster.side == Side::A) std::reverse(v, v + count);
@@ -63,18 +67,12 @@ void finishPolygon(const Volume& volume, PolygonVertex* v, int count, bool smoot
   if (!raster.collect_only) rasterisePlanar(volume, raster.planars.back(), id, raster);
 }
 
-// Counter-clockwise seen from +n: B's front faces already are, A's are reversed.
 void pushPolygon(const Volume& volume, PolygonVertex* v, int count, bool smooth,
                  const Material& material, SurfaceRaster& raster) {
-  if (raster.side == Side::A) std::reverse(v, v + count);
-  shiftUv(v, count);
-  raster.planars.emplace_back();
-  if (!makePlanar(volume, v, count, smooth, material, raster.planars.back(), raster.depth)) {
-    raster.planars.pop_back();
-    return;
-  }
-  const auto id = static_cast<int32_t>(raster.planars.size() - 1);
-  if (!raster.collect_only) rasterisePlanar(volume, raster.planars.back(), id, raster);
+  std::array<Vec3, kMaxPolygonCorners> corners;
+  for (int k = 0; k < count; ++k) corners[static_cast<size_t>(k)] = v[k].p;
+  if (boundPolygon(volume, corners.data(), count, raster))
+    finishPolygon(volume, v, count, smooth, material, raster);
 }
 
 // Whether a box face, centred at c with edge half-vectors et and eb (contact frame), surely
