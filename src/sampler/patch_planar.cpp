@@ -763,8 +763,11 @@ void addStrips(bool avx2, const Strip* strips, size_t count, size_t stride, int 
       out[k] += st.h * (vb - va);
     }
   }
-  for (size_t s = 0; s < count && repeats; ++s)
-    for (int k = 0; k < len; ++k) out[k] += repeatWeight(strips[s]) * strips[s].total[begin + k];
+  for (size_t s = 0; s < count && repeats; ++s) {
+    const float weight = repeatWeight(strips[s]);
+    if (weight == 0.0f) continue;
+    for (int k = 0; k < len; ++k) out[k] += weight * strips[s].total[begin + k];
+  }
 }
 
 }  // namespace
