@@ -836,6 +836,13 @@ double CoefficientTables::accumulate(const Grid& grid, std::span<const Vec2> pol
   double xmax = 0.0;
   for (int k = 0; k < n; ++k) xmax = std::max(xmax, v[static_cast<size_t>(k)].x());
   auto gather = [&](auto within) {
+    const auto end = [&](const float* row, double x) {
+      if constexpr (decltype(within)::value) {
+        return endWithin(row, x);
+      } else {
+        return endOf(row, x);
+      }
+    };
     double y = ymin;
     while (y < ymax) {
       chains.advance(y);
@@ -854,12 +861,9 @@ double CoefficientTables::accumulate(const Grid& grid, std::span<const Vec2> pol
         if (lo > hi) std::swap(lo, hi);
         if (!(hi > lo)) continue;
         Strip& st = strips[gathered++];
-        if constexpr (decltype(within)::value) {
-          st = {endWithin(row, lo), endWithin(row, hi), row + static_cast<size_t>(cols) * m,
-                static_cast<float>(y1 - y0)};
-        } else {
-          st = {endOf(row, lo), endOf(row, hi), row + static_cast<size_t>(cols) * m,
-                static_cast<float>(y1 - y0)};
+        st = {end(row, lo), end(row, hi), row + static_cast<size_t>(cols) * m,
+              static_cast<float>(y1 - y0)};
+        if constexpr (!decltype(within)::value) {
           repeats = repeats || st.b.repeats != st.a.repeats;
         }
         if (gathered == strips.size()) flush();

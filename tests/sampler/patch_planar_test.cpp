@@ -76,6 +76,13 @@ std::vector<double> readAsAContact(const patch::CoefficientTables& tables,
   return sums;
 }
 
+// A square `side` cells wide about `centre`, turned by `turn` (rad), counter-clockwise.
+std::vector<Vec2> turnedSquare(const Vec2& centre, double side, double turn) {
+  const Vec2 along(std::cos(turn), std::sin(turn)), across(-along.y(), along.x());
+  return {centre - 0.5 * side * (along + across), centre + 0.5 * side * (along - across),
+          centre + 0.5 * side * (along + across), centre - 0.5 * side * (along - across)};
+}
+
 TEST(PlanarTables, CoarserLevelsReadTallFootprintsWithinTheirBound) {
   // Turned squares 20 to 120 cells tall read on the levels a contact takes against the finest
   // level's integrals: within kMaxLevelError of the mean at every angle. A uniform slope (the
@@ -89,12 +96,8 @@ TEST(PlanarTables, CoarserLevelsReadTallFootprintsWithinTheirBound) {
     std::vector<int> which(static_cast<size_t>(tables.angles()));
     for (int a = 0; a < tables.angles(); ++a) which[static_cast<size_t>(a)] = a;
     for (int k = 0; k < 12; ++k) {
-      const double side = 14.0 + 7.0 * k, turn = 0.37 * k;
-      const Vec2 centre(11.3 * k, 5.7 * k), along(std::cos(turn), std::sin(turn));
-      const Vec2 across(-along.y(), along.x());
-      const std::vector<Vec2> square = {
-          centre - 0.5 * side * (along + across), centre + 0.5 * side * (along - across),
-          centre + 0.5 * side * (along + across), centre - 0.5 * side * (along - across)};
+      const std::vector<Vec2> square =
+          turnedSquare(Vec2(11.3 * k, 5.7 * k), 14.0 + 7.0 * k, 0.37 * k);
       std::vector<double> finest(which.size());
       const double area = tables.integrate(square, which, finest);
       double read_area = 0.0;
@@ -128,12 +131,8 @@ TEST(PlanarTables, TheGradientsLevelsReadFootprintsWithinTheirBound) {
     for (int a = 0; a < tables.angles(); ++a) which[static_cast<size_t>(a)] = a;
     const double tan_max = std::tan(patch::kMaxTilt);
     for (int k = 0; k < 12; ++k) {
-      const double side = 4.0 + 4.0 * k, turn = 0.61 * k;
-      const Vec2 centre(9.1 * k, 13.4 * k), along(std::cos(turn), std::sin(turn));
-      const Vec2 across(-along.y(), along.x());
-      const std::vector<Vec2> square = {
-          centre - 0.5 * side * (along + across), centre + 0.5 * side * (along - across),
-          centre + 0.5 * side * (along + across), centre - 0.5 * side * (along - across)};
+      const std::vector<Vec2> square =
+          turnedSquare(Vec2(9.1 * k, 13.4 * k), 4.0 + 4.0 * k, 0.61 * k);
       for (int channel = 1; channel <= 2; ++channel) {
         std::vector<double> finest(which.size());
         const double area = tables.integrate(square, which, finest, channel);
