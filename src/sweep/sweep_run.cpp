@@ -15,6 +15,7 @@
 #include <numeric>
 
 #include "asperity/error.hpp"
+#include "asperity/scene/friction_providers.hpp"
 #include "asperity/scene/scene.hpp"
 #include "asperity/sweep/sweep.hpp"
 #include "asperity/world/run_loop.hpp"
@@ -83,10 +84,13 @@ Sweep::Sweep(SweepDesc desc) : desc_(std::move(desc)) {
   // The scene itself must load; its bodies name the pose columns and the measures.
   const SceneDesc scene = parseScene(*scene_, desc_.scene_file);
   // Pool threads have no OpenGL context: only the core's samplers run in a sweep.
-  if (scene.friction_provider != "constant" && scene.friction_provider != "cone" &&
-      scene.friction_provider != "cpu")
+  const FrictionProviders core = FrictionProviders::builtIn();
+  if (!core.has(scene.friction_provider)) {
+    std::string list;
+    for (const std::string& name : core.names()) list += (list.empty() ? "" : ", ") + name;
     throw Error(desc_.scene_file + ": sampler \"" + scene.friction_provider +
-                "\" cannot run in a sweep (available: constant, cone, cpu)");
+                "\" cannot run in a sweep (available: " + list + ")");
+  }
   for (const BodyDesc& b : scene.bodies) body_names_.push_back(b.name);
   for (const std::string& m : desc_.measures) measures_.push_back(resolveMeasure(m, body_names_));
   steps_ = stepsFor(desc_.seconds, scene.settings.dt, "seconds");
