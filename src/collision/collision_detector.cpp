@@ -252,11 +252,13 @@ void CollisionDetector::Impl::collect(std::span<const Body> bodies, const Thread
   plane_pairs.clear();
   sdf_pairs.clear();
   workers = pool;
-  // idleBoxPair's lists, one per worker slot, with room for a pair's manifolds from the start.
+  // A box pair's lists (idleBoxPair, dropStalePoints), one per worker slot, with room for a
+  // pair's manifolds and points from the start.
   const size_t slots = workers ? static_cast<size_t>(workers->concurrency()) : 1;
   while (pair_manifolds.size() < slots) {
     pair_manifolds.emplace_back();
     pair_manifolds.back().list.reserve(4);
+    pair_manifolds.back().stale.reserve(16);
   }
   pair_manifolds.resize(slots);
   if (world) detectPairs();

@@ -81,10 +81,17 @@ struct CollisionDetector::Impl {
     uint64_t key;
     uint32_t index;  // into found
   };
-  // Per worker slot of this call: idleBoxPair's list of a pair's manifolds, each on its own
+  // A manifold point dropped as stale before the narrowphase: its place on body 0 and its id.
+  struct StalePoint {
+    const btPersistentManifold* manifold;
+    btVector3 local_a;
+    void* id;
+  };
+  // Per worker slot of this call: a box pair's manifolds and stale points, each on its own
   // cache line (two threads writing one line would pass it back and forth for every pair).
   struct alignas(64) ManifoldList {
     btManifoldArray list;
+    std::vector<StalePoint> stale;  // the box pair's, between dropStalePoints and keepStaleIds
   };
 
   CollisionSettings settings;
@@ -226,6 +233,8 @@ struct CollisionDetector::Impl {
   static void nearCallback(btBroadphasePair& pair, btCollisionDispatcher& d,
                            const btDispatcherInfo& info);
   bool idleBoxPair(btBroadphasePair& pair, int r0, int r1, btManifoldArray& scratch) const;
+  static void dropStalePoints(btBroadphasePair& pair, ManifoldList& scratch);
+  static void keepStaleIds(ManifoldList& scratch);
   void deferBoxPair(btBroadphasePair& pair, btCollisionDispatcher& d);
   void detectPairs();
   void processDeferred();

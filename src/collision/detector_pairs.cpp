@@ -100,7 +100,65 @@ void CollisionDetector::Impl::nearCallback(btBroadphasePair& pair, btCollisionDi
     self->deferBoxPair(pair, d);
     return;
   }
+  if (box_pair) {
+    dropStalePoints(pair, self->pair_manifolds[0]);
+    btCollisionDispatcher::defaultNearCallback(pair, d, info);
+    keepStaleIds(self->pair_manifolds[0]);
+    return;
+  }
   btCollisionDispatcher::defaultNearCallback(pair, d, info);
+}
+
+// Bullet's box-box narrowphase adds the step's corners to the pair's manifold (four points at
+// most) and only then drops the points the boxes have slid past. A box sliding farther in a
+// step than the breaking threshold (a few mm) brings four new corners to four stale points:
+// the manifold, full, replaces points to keep the largest area and may replace a new corner
+// with the next, and the refresh then drops the stale ones. Such a box kept two or three of
+// its four corners, step after step, and rocked on them. The stale points go first here, by
+// Bullet's own refresh; keepStaleIds then gives their ids to the new points that Bullet would
+// have put in their places (so the solver's warm start follows them, as before).
+void CollisionDetector::Impl::dropStalePoints(btBroadphasePair& pair, ManifoldList& scratch) {
+  scratch.stale.clear();
+  if (!pair.m_algorithm) return;
+  scratch.list.resizeNoInitialize(0);
+  pair.m_algorithm->getAllContactManifolds(scratch.list);
+  for (int k = 0; k < scratch.list.size(); ++k) {
+    btPersistentManifold* m = scratch.list[k];
+    const size_t first = scratch.stale.size();
+    for (int p = 0; p < m->getNumContacts(); ++p) {
+      const btManifoldPoint& pt = m->getContactPoint(p);
+      scratch.stale.push_back({m, pt.m_localPointA, pt.m_userPersistentData});
+    }
+    if (scratch.stale.size() == first) continue;
+    m->refreshContactPoints(m->getBody0()->getWorldTransform(), m->getBody1()->getWorldTransform());
+    // Those still in the manifold are not stale.
+    for (int p = 0; p < m->getNumContacts(); ++p) {
+      void* id = m->getContactPoint(p).m_userPersistentData;
+      for (size_t s = first; s < scratch.stale.size(); ++s)
+        if (scratch.stale[s].id == id) scratch.stale[s].manifold = nullptr;
+    }
+  }
+}
+
+// A new point takes the id of the stale point nearest to it on body 0 within the breaking
+// threshold: the one getCacheEntry would have replaced by it, keeping the id.
+void CollisionDetector::Impl::keepStaleIds(ManifoldList& scratch) {
+  for (int k = 0; k < scratch.list.size() && !scratch.stale.empty(); ++k) {
+    btPersistentManifold* m = scratch.list[k];
+    const btScalar reach = m->getContactBreakingThreshold() * m->getContactBreakingThreshold();
+    for (int p = 0; p < m->getNumContacts(); ++p) {
+      btManifoldPoint& pt = m->getContactPoint(p);
+      if (pt.m_userPersistentData) continue;
+      StalePoint* nearest = nullptr;
+      btScalar best = reach;
+      for (StalePoint& s : scratch.stale) {
+        if (s.manifold != m || !s.id) continue;
+        const btScalar d = (s.local_a - pt.m_localPointA).length2();
+        if (d < best) best = d, nearest = &s;
+      }
+      if (nearest) pt.m_userPersistentData = nearest->id, nearest->id = nullptr;
+    }
+  }
 }
 
 // A box pair whose algorithm and manifold exist (made in pair order, as without this test)
@@ -182,12 +240,15 @@ void CollisionDetector::Impl::processDeferred() {
                     pair_manifolds[static_cast<size_t>(workers->slot())].list)) {
       return;
     }
+    ManifoldList& scratch = pair_manifolds[static_cast<size_t>(workers->slot())];
+    dropStalePoints(pair, scratch);
     const btCollisionObjectWrapper w0(nullptr, o0->getCollisionShape(), o0, o0->getWorldTransform(),
                                       -1, -1);
     const btCollisionObjectWrapper w1(nullptr, o1->getCollisionShape(), o1, o1->getWorldTransform(),
                                       -1, -1);
     btManifoldResult result(&w0, &w1);
     pair.m_algorithm->processCollision(&w0, &w1, info, &result);
+    keepStaleIds(scratch);
   });
   deferred.clear();
 }

@@ -4,6 +4,7 @@
 // the counting operator new below.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdlib>
 #include <new>
@@ -52,11 +53,27 @@ TEST_P(StepAllocations, WarmedUpStepsAllocateNothing) {
     SceneDesc scene = loadScene(test::sourcePath("scenes/" + GetParam() + ".json"));
     scene.settings.threads = threads;
     const std::unique_ptr<World> world = instantiate(scene);
-    for (int i = 0; i < 200; ++i) world->step();
+    size_t most = 0;  // the most contacts a step has had
+    for (int i = 0; i < 200; ++i) {
+      world->step();
+      most = std::max(most, world->contacts().size());
+    }
     ASSERT_FALSE(world->contacts().empty());
-    const long before = g_allocations.load();
-    for (int i = 0; i < 10; ++i) world->step();
-    EXPECT_EQ(g_allocations.load() - before, 0) << threads << " threads";
+    // A step that brings more contacts than any before may grow the buffers sized by them
+    // (a stack still settling finds new corners); every other step allocates nothing.
+    int checked = 0;
+    for (int i = 0; i < 10; ++i) {
+      const long before = g_allocations.load();
+      world->step();
+      const long allocations = g_allocations.load() - before;
+      if (world->contacts().size() > most) {
+        most = world->contacts().size();
+        continue;
+      }
+      ++checked;
+      EXPECT_EQ(allocations, 0) << threads << " threads, step " << 201 + i;
+    }
+    EXPECT_GE(checked, 5) << threads << " threads";
   }
 }
 
