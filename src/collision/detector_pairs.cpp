@@ -131,12 +131,15 @@ void CollisionDetector::Impl::dropStalePoints(btBroadphasePair& pair, ManifoldLi
     }
     if (scratch.stale.size() == first) continue;
     m->refreshContactPoints(m->getBody0()->getWorldTransform(), m->getBody1()->getWorldTransform());
-    // Those still in the manifold are not stale.
-    for (int p = 0; p < m->getNumContacts(); ++p) {
-      void* id = m->getContactPoint(p).m_userPersistentData;
-      for (size_t s = first; s < scratch.stale.size(); ++s)
-        if (scratch.stale[s].id == id) scratch.stale[s].manifold = nullptr;
-    }
+    // Those still in the manifold are not stale: only the dropped ones stay listed.
+    const auto kept = [m](const StalePoint& s) {
+      for (int p = 0; p < m->getNumContacts(); ++p)
+        if (m->getContactPoint(p).m_userPersistentData == s.id) return true;
+      return false;
+    };
+    scratch.stale.erase(std::remove_if(scratch.stale.begin() + static_cast<std::ptrdiff_t>(first),
+                                       scratch.stale.end(), kept),
+                        scratch.stale.end());
   }
 }
 
