@@ -1,6 +1,7 @@
 // The CPU patch sampler per contact (SPEC 3): boxes resting on a textured plane (four corner
 // contacts each, a quarter of every patch covered by both surfaces) at N = 4 and 16, R = 16,
-// from 10 to 10 000 contacts, rasterised or through the planar path's tables; and the Stanford
+// from 10 to 10 000 contacts, each pixel reading its nearest texel or a bilinear blend of four
+// (FrictionSettings::texel_reading); and the Stanford
 // bunny (glmark2's OBJ through loadObjMesh, all 69 666 triangles or simplified to 2000,
 // planar-projected, 1 mm deep) on the plane. Counter `per_contact` is the time per contact.
 // BM_SceneContacts samples the contacts that three scenes' worlds meet over their first 2 s
@@ -24,10 +25,11 @@ namespace asperity {
 namespace {
 
 void run(benchmark::State& state, bench::SamplerScene& scene, int n,
-         const CpuSamplerOptions& options = {}) {
+         const CpuSamplerOptions& options = {}, TexelReading reading = TexelReading::Nearest) {
   CpuPatchSampler sampler(options);
   FrictionSettings settings;
   settings.directions = n;
+  settings.texel_reading = reading;
   settings.patch_resolution = 16;
   settings.patch_width = 0.02;
   sampler.computeCoefficients(scene.bodies, scene.contacts, settings);  // builds mesh BVHs
@@ -45,13 +47,12 @@ void run(benchmark::State& state, bench::SamplerScene& scene, int n,
 
 void BM_BoxOnPlane(benchmark::State& state) {
   bench::SamplerScene scene = bench::boxesOnPlane(static_cast<int>(state.range(1)));
-  CpuSamplerOptions options;
-  options.path = state.range(2) != 0 ? PatchPath::Planar : PatchPath::Raster;
-  run(state, scene, static_cast<int>(state.range(0)), options);
+  run(state, scene, static_cast<int>(state.range(0)), {},
+      state.range(2) != 0 ? TexelReading::Bilinear : TexelReading::Nearest);
 }
-// planar 1: the planar path (tables built by the first call, outside the timing).
+// bilinear 1: the blended reading, for comparison.
 BENCHMARK(BM_BoxOnPlane)
-    ->ArgNames({"N", "contacts", "planar"})
+    ->ArgNames({"N", "contacts", "bilinear"})
     ->Args({4, 1000, 0})
     ->Args({4, 1000, 1})
     ->Args({16, 1000, 0})
@@ -164,15 +165,12 @@ void BM_SceneContacts(benchmark::State& state) {
     return;
   }
   settings.reuse_pixels = 0.0;  // every contact sampled afresh
-  CpuSamplerOptions options;
-  options.path = state.range(1) != 0 ? PatchPath::Planar : PatchPath::Raster;
-  CpuPatchSampler sampler(options);
+  settings.texel_reading = state.range(1) != 0 ? TexelReading::Bilinear : TexelReading::Nearest;
+  CpuPatchSampler sampler;
   size_t contacts = 0;
-  int planar = 0;
-  for (Snapshot& s : snapshots) {  // builds the tables, outside the timing
+  for (Snapshot& s : snapshots) {  // builds the mesh BVHs, outside the timing
     sampler.computeCoefficients(s.bodies, s.contacts, settings);
     contacts += s.contacts.size();
-    planar += sampler.lastPlanarCount();
   }
   for (auto _ : state) {
     for (Snapshot& s : snapshots) sampler.computeCoefficients(s.bodies, s.contacts, settings);
@@ -181,11 +179,10 @@ void BM_SceneContacts(benchmark::State& state) {
   state.counters["per_contact"] = benchmark::Counter(
       static_cast<double>(contacts),
       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
-  state.counters["planar_share"] = static_cast<double>(planar) / static_cast<double>(contacts);
   state.SetLabel(kScenes[state.range(0)]);
 }
-// scene: 0 stacking, 1 oak_stacks, 2 boxes_on_materials; planar: the planar path.
-BENCHMARK(BM_SceneContacts)->ArgNames({"scene", "planar"})->ArgsProduct({{0, 1, 2}, {0, 1}});
+// scene: 0 stacking, 1 oak_stacks, 2 boxes_on_materials; bilinear: the blended reading.
+BENCHMARK(BM_SceneContacts)->ArgNames({"scene", "bilinear"})->ArgsProduct({{0, 1, 2}, {0, 1}});
 
 }  // namespace
 }  // namespace asperity

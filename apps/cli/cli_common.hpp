@@ -9,7 +9,9 @@
 
 #include <CLI/CLI.hpp>
 #include <string>
+#include <vector>
 
+#include "asperity/math/enum_names.hpp"
 #include "asperity/scene/friction_providers.hpp"
 
 namespace asperity {
@@ -17,6 +19,14 @@ class World;
 }
 
 namespace asperity::cli {
+
+// The names an enumeration's table gives, for CLI11's check.
+template <typename E>
+std::vector<std::string> namesOf(EnumNames<E> names) {
+  std::vector<std::string> out;
+  for (const auto& [name, e] : names) out.emplace_back(name);
+  return out;
+}
 
 // Subcommands (apps/cli/<name>_command.cpp).
 void registerTextureCommand(CLI::App& app);

@@ -46,14 +46,6 @@ struct RunOptions {
   std::optional<double> checkpoint_every;       // s of simulated time between checkpoints
 };
 
-// The names an enumeration's table gives, for CLI11's check.
-template <typename E>
-std::vector<std::string> namesOf(EnumNames<E> names) {
-  std::vector<std::string> out;
-  for (const auto& [name, e] : names) out.emplace_back(name);
-  return out;
-}
-
 // Appends the shortest text that reads back to the same double.
 void appendNumber(std::string& line, double x) {
   char buffer[32];
@@ -92,40 +84,6 @@ void appendRows(std::string& text, const World& world, int64_t step) {
   }
 }
 
-// What a texture is called in the stats: its material, else its file, else its generator (as
-// gen:NAME:SEED), from the first surface that uses it.
-std::string textureName(const World& world, const NormalMap* map) {
-  for (const Body& body : world.bodies()) {
-    for (const Shape& shape : body.shapes) {
-      const Surface& surface = shape.surface;
-      if (surface.normal_map.get() != map) continue;
-      if (!surface.source.material.empty()) return surface.source.material;
-      if (!surface.source.normal_map_file.empty()) return surface.source.normal_map_file;
-      if (!surface.source.generator.name.empty())
-        return "gen:" + surface.source.generator.name + ":" +
-               std::to_string(surface.source.generator.seed);
-    }
-  }
-  return "";
-}
-
-// The planar path's tables, one entry per texture (each built once and shared), by name.
-nlohmann::ordered_json tablesJson(const World& world) {
-  std::vector<nlohmann::ordered_json> entries;
-  for (const TextureTables& t : world.frictionProvider().tables()) {
-    entries.push_back({{"texture", textureName(world, t.map)},
-                       {"width", t.map->width()},
-                       {"height", t.map->height()},
-                       {"masked", t.mask != nullptr},
-                       {"levels", t.levels},
-                       {"bytes", t.bytes}});
-  }
-  std::stable_sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
-    return a["texture"].template get<std::string>() < b["texture"].template get<std::string>();
-  });
-  return nlohmann::ordered_json(entries);
-}
-
 nlohmann::ordered_json statsJson(const RunOptions& opt, const SceneDesc& scene, const World& world,
                                  const ProfileSums& sums, int64_t steps, double wall_s) {
   nlohmann::ordered_json j;
@@ -144,9 +102,6 @@ nlohmann::ordered_json statsJson(const RunOptions& opt, const SceneDesc& scene, 
   for (const auto& [name, value] : sums.means()) per_step[name] = value;
   j["per_step"] = per_step;
   j["max_contacts"] = sums.max_contacts;
-  // The planar path's tables: all together, and per texture.
-  j["table_bytes"] = world.frictionProvider().tableBytes();
-  j["tables"] = tablesJson(world);
   char hash[17];
   std::snprintf(hash, sizeof(hash), "%016llx", static_cast<unsigned long long>(world.stateHash()));
   j["state_hash"] = hash;

@@ -1,5 +1,7 @@
 #include "tribometer_options.hpp"
 
+#include <string>
+
 #include "cli_common.hpp"
 
 namespace asperity::cli {
@@ -65,6 +67,15 @@ void addRigOptions(CLI::App* sub, TribometerSettings& s) {
   sub->add_option("--patch-res", s.friction.patch_resolution, "Patch resolution R (pixels)")
       ->check(CLI::Range(1, 1024))
       ->capture_default_str();
+  sub->add_option_function<std::string>(
+         "--texel-reading",
+         [&s](const std::string& name) {
+           s.friction.texel_reading = parseName<TexelReading>(name, kTexelReadingNames,
+                                                              "--texel-reading");
+         },
+         "How patch pixels read the normal map: nearest (one texel a facet) or bilinear")
+      ->check(CLI::IsMember(namesOf<TexelReading>(kTexelReadingNames)))
+      ->default_str("nearest");
   sub->add_option("--sampler", s.sampler, "Friction provider: cpu, cone or constant")
       ->check(CLI::IsMember({"cpu", "cone", "constant"}))
       ->capture_default_str();

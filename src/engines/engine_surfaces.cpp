@@ -31,6 +31,7 @@ ContactFrictionSettings parseSettings(JsonReader r) {
   f.patch_width = r.number("patch_width", f.patch_width, Range::positive(scene::kHuge));
   f.patch_resolution = r.integer("patch_resolution", f.patch_resolution, 1, 1024);
   f.reuse_pixels = r.number("reuse_pixels", f.reuse_pixels, Range::nonNegative(scene::kHuge));
+  f.texel_reading = r.enumeration("texel_reading", f.texel_reading, kTexelReadingNames);
   s.provider = r.string("friction_provider", s.provider);
   s.frame_mode = r.enumeration("frame_mode", s.frame_mode, kFrameModeNames);
   s.world_axis = r.direction("world_axis", s.world_axis);

@@ -12,7 +12,6 @@
 #include "sampler/patch_common.hpp"
 #include "sampler/patch_contact_area.hpp"
 #include "sampler/patch_geometry.hpp"
-#include "sampler/patch_planar.hpp"
 #include "sampler/patch_reuse.hpp"
 #include "sampler/patch_shade.hpp"
 
@@ -75,20 +74,12 @@ bool ContactAreaOptions::anyContactArea() const {
 
 // Scratch kept between calls: rasters, fragment arrays, sample directions.
 struct CpuPatchSampler::State {
-  State(patch::MeshCache& shared, const patch::TableCache& shared_tables,
-        const CpuSamplerOptions& opt, const patch::HeightCache& height_cache)
-      : meshes(shared),
-        tables(shared_tables),
-        simd(opt.simd),
-        planar(opt.path == PatchPath::Planar && !opt.contact_area.anyContactArea()),
-        area(opt.contact_area),
+  State(patch::MeshCache& shared, const CpuSamplerOptions& opt,
+        const patch::HeightCache& height_cache)
+      : meshes(shared), simd(opt.simd), area(opt.contact_area),
         heights(height_cache) {}
   patch::MeshCache& meshes;         // the sampler's, shared by every thread's state
-  const patch::TableCache& tables;  // the sampler's; built before the contacts are sampled
   SimdCopy simd;                    // the sampler's option, for every loop this state runs
-  // Flat patches through the tables (patch_planar.hpp); only when no contact may use the
-  // contact-area model (it needs each pixel).
-  bool planar;
   const ContactAreaOptions& area;     // the sampler's option
   const patch::HeightCache& heights;  // the sampler's, shared (read only while sampling)
   patch::AreaScratch area_scratch;
@@ -99,16 +90,8 @@ struct CpuPatchSampler::State {
   std::vector<Vec2> directions;
   std::array<std::array<double, kMaxDirections>, 2> sums{};
   double patch_ms = 0.0, averaging_ms = 0.0;
-  int planar_count = 0;  // contacts of this call sampled by the planar path
 
   void prepare(const FrictionSettings& settings);
-  // The planar path: false (nothing changed) where it does not apply.
-  bool samplePlanar(const patch::Volume& volume, const patch::ShapeRange (&ranges)[2],
-                    Contact& contact, const FrictionSettings& settings,
-                    std::array<patch::DepthMargins, 2>& margins);
-  // The one face of a surface that covers pixel centres (null: none), or false.
-  bool planarFace(const patch::Volume& volume, const patch::ShapeRange& range, Side side,
-                  const FrictionSettings& settings, patch::PlanarSurface& out);
   void rasterise(const patch::Volume& volume, const patch::ShapeRange (&ranges)[2], bool whole);
   // Returns the margins of the depth clip decisions on A and B (patch_reuse.hpp).
   std::array<patch::DepthMargins, 2> sample(std::span<const Body> bodies, Contact& contact,
@@ -231,12 +214,6 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   volume.simd = simd;
   const patch::ShapeRange ranges[2] = {patch::shapesOf(bodies, contact, Side::A),
                                        patch::shapesOf(bodies, contact, Side::B)};
-  std::array<patch::DepthMargins, 2> margins;
-  if (planar && images == nullptr && samplePlanar(volume, ranges, contact, settings, margins)) {
-    ++planar_count;
-    patch_ms += msBetween(t0, Clock::now());
-    return margins;
-  }
   // Rasterise both surfaces and find P, then shade P into ploughing vectors (A, then B).
   rasterise(volume, ranges, images != nullptr);
   const size_t count = in_patch.size();
@@ -290,104 +267,12 @@ void CpuPatchSampler::State::finishWithArea(const patch::Volume& volume,
                            contact, area_scratch);
 }
 
-bool CpuPatchSampler::State::planarFace(const patch::Volume& volume, const patch::ShapeRange& range,
-                                        Side side, const FrictionSettings& settings,
-                                        patch::PlanarSurface& out) {
-  // Box faces and planes only; curved shapes and meshes keep the raster path.
-  for (int k = range.first; k < range.last; ++k) {
-    const ShapeType type = range.body->shapes[static_cast<size_t>(k)].type;
-    if (type != ShapeType::Box && type != ShapeType::Plane) return false;
-  }
-  patch::SurfaceRaster& r = raster[side == Side::A ? 0 : 1];
-  r.resetCollect(side);
-  for (int k = range.first; k < range.last; ++k) {
-    patch::rasteriseShape(volume, range.body->shapes[static_cast<size_t>(k)],
-                          patch::shapePose(*range.body, k), meshes, geometry, r);
-  }
-  // One flat face covers the pixel centres; any other face must cover none (so the raster
-  // path's nearest-fragment choice never arises).
-  out = {};
-  const bool several = r.planars.size() > 1;
-  for (const patch::Planar& prim : r.planars) {
-    if (patch::noteDepthDecisions(volume, prim, r.depth, several) && several) continue;
-    if (out.face != nullptr || !patch::isFlatFace(prim)) return false;
-    out.face = &prim;
-  }
-  if (out.face == nullptr || out.face->material.map == nullptr) return true;
-  out.tables = tables.find(out.face->material.map, out.face->material.mask, settings.mu_max,
-                           settings.directions);
-  if (out.tables == nullptr) return false;  // a texture over the tables' budget is rasterised
-  // A tilted face whose first-order shading may miss more than kMaxTiltError (in mu, after
-  // its gain) is rasterised.
-  return std::abs(patch::gainOf(range)) * out.tables->tiltError() * patch::tiltOf(*out.face) /
-             std::tan(patch::kMaxTilt) <=
-         patch::kMaxTiltError;
-}
-
-namespace {
-
-// Whether a surface of one box or plane surely has no face within kMaxTilt of the contact
-// normal (planarFace would refuse it): then the raster path is taken before any primitive is
-// built. The margin keeps every contact near the limit for planarFace's own test.
-bool surelyTilted(const patch::ShapeRange& range, const Vec3& normal) {
-  if (range.last - range.first != 1) return false;
-  const Shape& shape = range.body->shapes[static_cast<size_t>(range.first)];
-  const Mat3 r = patch::shapePose(*range.body, range.first).rotation.toRotationMatrix();
-  double best = 0.0;
-  if (shape.type == ShapeType::Box) {
-    best = (r.transpose() * normal).cwiseAbs().maxCoeff();
-  } else if (shape.type == ShapeType::Plane) {
-    const double len = shape.plane_normal.norm();
-    if (!(len > 0.0)) return false;
-    best = std::abs((r * shape.plane_normal).dot(normal)) / len;
-  } else {
-    return false;
-  }
-  return best < std::cos(patch::kMaxTilt) - 1e-9;
-}
-
-}  // namespace
-
-bool CpuPatchSampler::State::samplePlanar(const patch::Volume& volume,
-                                          const patch::ShapeRange (&ranges)[2], Contact& contact,
-                                          const FrictionSettings& settings,
-                                          std::array<patch::DepthMargins, 2>& margins) {
-  if (surelyTilted(ranges[0], contact.normal) || surelyTilted(ranges[1], contact.normal))
-    return false;
-  patch::PlanarSurface surfaces[2];
-  if (!planarFace(volume, ranges[0], Side::A, settings, surfaces[0]) ||
-      !planarFace(volume, ranges[1], Side::B, settings, surfaces[1])) {
-    return false;
-  }
-  const size_t n = directions.size();
-  std::array<std::array<double, kMaxDirections>, 2> means{};
-  int pixels = 0;
-  if (surfaces[0].face != nullptr && surfaces[1].face != nullptr) {
-    const patch::Footprint footprint =
-        patch::footprintOf(volume, *surfaces[0].face, *surfaces[1].face);
-    pixels = footprint.pixels;
-    if (pixels < patch::kMinPlanarPixels) return false;
-    for (size_t s = 0; s < 2 && pixels > 0; ++s) {
-      patch::planarMeans(footprint, surfaces[s], s == 0 ? Side::A : Side::B, directions,
-                         std::span<double>(means[s].data(), n));
-      // finishContact divides sums over |P| (the raster path's count of P).
-      for (size_t k = 0; k < n; ++k) means[s][k] *= pixels;
-    }
-  }
-  patch::finishContact(contact, std::span<const double>(means[0].data(), n),
-                       std::span<const double>(means[1].data(), n), pixels,
-                       patch::gainsOf(ranges[0], ranges[1], settings.mu0));
-  margins = {raster[0].depth, raster[1].depth};
-  return true;
-}
-
 CpuPatchSampler::CpuPatchSampler(const CpuSamplerOptions& options)
     : options_(options),
       meshes_(std::make_unique<patch::MeshCache>()),
-      tables_(std::make_unique<patch::TableCache>()),
       reuse_(std::make_unique<patch::PatchReuse>()),
       heights_(std::make_unique<patch::HeightCache>()) {
-  state_ = std::make_unique<State>(*meshes_, *tables_, options_, *heights_);
+  state_ = std::make_unique<State>(*meshes_, options_, *heights_);
 }
 
 void CpuPatchSampler::forgetHistory() {
@@ -406,41 +291,9 @@ CpuPatchSampler::~CpuPatchSampler() = default;
 void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& contact,
                                     const FrictionSettings& settings, PatchImages* images) {
   validatePatchSettings(settings, "cpu sampler");
-  if (options_.path == PatchPath::Planar) prepareTables(bodies, contact, settings);
   if (modelOf(options_.contact_area, bodies, contact) == FrictionModel::ContactArea)
     heights_->prepare(bodies, contact);
   state_->sample(bodies, contact, settings, images);
-}
-
-void CpuPatchSampler::prepare(std::span<const Body> bodies, const FrictionSettings& settings) {
-  if (options_.path != PatchPath::Planar) return;
-  validatePatchSettings(settings, "cpu sampler");
-  for (const Body& body : bodies)
-    for (const Shape& shape : body.shapes) prepareTables(shape, settings);
-}
-
-void CpuPatchSampler::prepareTables(const Shape& shape, const FrictionSettings& settings) {
-  if ((shape.type != ShapeType::Box && shape.type != ShapeType::Plane) ||
-      !shape.surface.normal_map) {
-    return;
-  }
-  tables_->get(shape.surface.normal_map, shape.surface.mask, settings.mu_max, settings.directions,
-               pool_);
-}
-
-void CpuPatchSampler::prepareTables(std::span<const Body> bodies, const Contact& contact,
-                                    const FrictionSettings& settings) {
-  // The tables of every textured box face and plane the contact may meet, built here, on the
-  // calling thread (their rows on the pool): the threads then only look them up.
-  for (const Side side : {Side::A, Side::B}) {
-    const patch::ShapeRange range = patch::shapesOf(bodies, contact, side);
-    for (int k = range.first; k < range.last; ++k)
-      prepareTables(range.body->shapes[static_cast<size_t>(k)], settings);
-  }
-}
-
-std::vector<TextureTables> CpuPatchSampler::tables() const {
-  return tables_->list();
 }
 
 void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
@@ -449,10 +302,6 @@ void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::spa
   // Contacts whose earlier sample still holds keep it; the others are sampled.
   reuse_->reuse(bodies, contacts, settings, reused_);
   reused_count_ = static_cast<int>(std::count(reused_.begin(), reused_.end(), uint8_t{1}));
-  if (options_.path == PatchPath::Planar) {
-    for (size_t i = 0; i < contacts.size(); ++i)
-      if (!reused_[i]) prepareTables(bodies, contacts[i], settings);
-  }
   // The contact-area model's heights are made here, on the calling thread, for all threads.
   if (options_.contact_area.anyContactArea()) {
     for (size_t i = 0; i < contacts.size(); ++i)
@@ -464,12 +313,10 @@ void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::spa
     // One contact after the other; scratch is reused.
     State& st = *state_;
     st.patch_ms = st.averaging_ms = 0.0;
-    st.planar_count = 0;
     for (size_t i = 0; i < contacts.size(); ++i)
       if (!reused_[i]) reuse_->margins(i) = st.sample(bodies, contacts[i], settings, nullptr);
     patch_ms_ = st.patch_ms;
     averaging_ms_ = st.averaging_ms;
-    planar_count_ = st.planar_count;
   } else {
     sampleOnPool(bodies, contacts, settings);
   }
@@ -483,11 +330,8 @@ void CpuPatchSampler::sampleOnPool(std::span<const Body> bodies, std::span<Conta
   for (size_t i = 0; i < contacts.size(); ++i)
     if (!reused_[i]) patch::prepareMeshes(*meshes_, bodies, contacts[i], false);
   while (worker_states_.size() < static_cast<size_t>(pool_->concurrency()))
-    worker_states_.push_back(std::make_unique<State>(*meshes_, *tables_, options_, *heights_));
-  for (auto& st : worker_states_) {
-    st->patch_ms = st->averaging_ms = 0.0;
-    st->planar_count = 0;
-  }
+    worker_states_.push_back(std::make_unique<State>(*meshes_, options_, *heights_));
+  for (auto& st : worker_states_) st->patch_ms = st->averaging_ms = 0.0;
   // Each contact is sampled alone (it writes only itself), with the scratch of the thread
   // that runs it: the coefficients are the same whichever thread that is.
   pool_->forEach(contacts.size(), 4, [&](size_t i) {
@@ -496,11 +340,9 @@ void CpuPatchSampler::sampleOnPool(std::span<const Body> bodies, std::span<Conta
     reuse_->margins(i) = st.sample(bodies, contacts[i], settings, nullptr);
   });
   patch_ms_ = averaging_ms_ = 0.0;
-  planar_count_ = 0;
   for (const auto& st : worker_states_) {
     patch_ms_ += st->patch_ms;
     averaging_ms_ += st->averaging_ms;
-    planar_count_ += st->planar_count;
   }
   // Which thread samples which contact varies from step to step: every thread's scratch
   // grows to the largest, so that a warmed-up step allocates on no thread.

@@ -56,6 +56,7 @@ Volume makeVolume(const Contact& c, const FrictionSettings& settings) {
   v.width = settings.patch_width;
   v.resolution = settings.patch_resolution;
   v.pixel = v.width / v.resolution;
+  v.reading = settings.texel_reading;
   // SPEC 3: depth phi + 0.01 w, centred on the contact (|phi| for reported gaps).
   v.half_depth = 0.5 * (std::abs(c.phi) + 0.01 * v.width);
   return v;

@@ -57,14 +57,14 @@ bool boundPolygon(const Volume& volume, Vec3* corners, int count, SurfaceRaster&
 }
 
 // The primitive boundPolygon added, finished from the same corners with their attributes, and
-// rasterised unless only collecting.
+// rasterised.
 void finishPolygon(const Volume& volume, PolygonVertex* v, int count, bool smooth,
                    const Material& material, SurfaceRaster& raster) {
   if (raster.side == Side::A) std::reverse(v, v + count);
   shiftUv(v, count);
   finishPlanar(v, count, smooth, material, raster.planars.back());
   const auto id = static_cast<int32_t>(raster.planars.size() - 1);
-  if (!raster.collect_only) rasterisePlanar(volume, raster.planars.back(), id, raster);
+  rasterisePlanar(volume, raster.planars.back(), id, raster);
 }
 
 void pushPolygon(const Volume& volume, PolygonVertex* v, int count, bool smooth,
@@ -154,7 +154,6 @@ void rasterisePlane(const Volume& volume, const Shape& shape, const Placement& p
   prim.i1 = prim.j1 = volume.resolution - 1;
   prim.material = materialOf(shape);
   raster.planars.push_back(prim);
-  if (raster.collect_only) return;
   rasterisePlanar(volume, raster.planars.back(), static_cast<int32_t>(raster.planars.size() - 1),
                   raster);
 }

@@ -85,9 +85,10 @@ void setFloatUv(Planar& prim) {
 }
 
 void SurfaceRaster::reset(Side s, int resolution) {
-  // The primitives and margins as for a collect-only pass, then the pixels.
-  resetCollect(s);
-  collect_only = false;
+  side = s;
+  planars.clear();
+  curveds.clear();
+  depth = DepthMargins::unlimited();
   const int pixels = resolution * resolution;
   wj0 = 0;
   wj1 = resolution - 1;
@@ -97,14 +98,6 @@ void SurfaceRaster::reset(Side s, int resolution) {
   cov_hi.assign(static_cast<size_t>(resolution), -1);
   key.assign(static_cast<size_t>(pixels), kEmpty);
   primitive.resize(static_cast<size_t>(pixels));
-}
-
-void SurfaceRaster::resetCollect(Side s) {
-  side = s;
-  planars.clear();
-  curveds.clear();
-  depth = DepthMargins::unlimited();
-  collect_only = true;
 }
 
 namespace {

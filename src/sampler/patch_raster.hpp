@@ -21,8 +21,17 @@
 #include "asperity/geometry/shape.hpp"
 #include "asperity/math/simd_copy.hpp"
 #include "asperity/math/types.hpp"
+#include "asperity/sampler/friction_provider.hpp"
 
 namespace asperity::patch {
+
+// Where the nearest reading looks for a pixel's texel: its centre moved this far (in texels)
+// along +u and +v. A centre exactly on a texel edge is common (round scene numbers on binary
+// texel sizes: a box corner at 0.9 m on 0.05 m / 128 texels) and would be decided by rounding,
+// which differs between the CPU's uv and the GPU's interpolated one: one pixel row of a
+// sawtooth then reads the other facet. Moved, such centres lie well inside one texel on both,
+// and the reading shifts by a hundredth of a texel (10 um on 1 mm texels).
+inline constexpr float kNearestTexelNudge = 0.01f;
 
 // The viewing volume of one contact (SPEC 3): centre, axes and size.
 struct Volume {
@@ -34,6 +43,8 @@ struct Volume {
   double pixel = 0.02 / 16;      // w / R
   // Which compiled copy of the rasterising and shading loops runs (the sampler's option).
   SimdCopy simd = SimdCopy::Auto;
+  // How each pixel reads the normal maps and masks (the settings' texel_reading).
+  TexelReading reading = TexelReading::Nearest;
 
   double centreX(int i) const { return -0.5 * width + (i + 0.5) * pixel; }
   // Packs pixel (i, j) for the fragment lists (i, j < 2^16).
@@ -152,13 +163,8 @@ struct SurfaceRaster {
   std::vector<int> cov_lo, cov_hi;
 
   DepthMargins depth;  // of the depth clip decisions made for this surface
-  // Set by resetCollect: rasteriseShape only builds the primitives (the planar path,
-  // patch_planar.hpp, integrates over them instead of shading pixels).
-  bool collect_only = false;
 
   void reset(Side s, int resolution);
-  // Clears the primitives and margins for a collect-only pass; the pixel arrays are untouched.
-  void resetCollect(Side s);
   bool covered(int pixel) const { return key[static_cast<size_t>(pixel)] > kEmpty; }
   // Widens row j's coverage span to [lo, hi] (lo <= hi).
   void cover(int j, int lo, int hi) {

@@ -27,7 +27,7 @@ struct Tolerance {
 bool sameSettings(const FrictionSettings& x, const FrictionSettings& y) {
   return x.directions == y.directions && x.mu0 == y.mu0 && x.mu_max == y.mu_max &&
          x.patch_width == y.patch_width && x.patch_resolution == y.patch_resolution &&
-         x.reuse_pixels == y.reuse_pixels;
+         x.reuse_pixels == y.reuse_pixels && x.texel_reading == y.texel_reading;
 }
 
 // The contact point and its points w/2 along t and b, in a body's frame.

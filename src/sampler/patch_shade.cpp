@@ -15,18 +15,19 @@ namespace asperity::patch {
 namespace {
 
 // Tangent-space normal and mask at uv (flat and 1 when absent).
-Fragment sampleMaterial(const Material& material, float u, float v) {
+Fragment sampleMaterial(const Material& material, float u, float v, TexelReading reading) {
   Fragment f;
-  if (material.map != nullptr && !material.map->empty()) f.m = sampleNormal(*material.map, u, v);
-  if (material.mask != nullptr) f.gain = sampleMask(*material.mask, u, v);
+  if (material.map != nullptr && !material.map->empty())
+    f.m = sampleNormal(*material.map, u, v, reading);
+  if (material.mask != nullptr) f.gain = sampleMask(*material.mask, u, v, reading);
   return f;
 }
 
-Fragment shadePlanar(const Planar& p, double x, double y) {
+Fragment shadePlanar(const Planar& p, TexelReading reading, double x, double y) {
   // uv and frame are affine over the primitive.
   const auto xf = static_cast<float>(x), yf = static_cast<float>(y);
   Fragment f = sampleMaterial(p.material, p.uf[0] + p.uf[1] * xf + p.uf[2] * yf,
-                              p.vf[0] + p.vf[1] * xf + p.vf[2] * yf);
+                              p.vf[0] + p.vf[1] * xf + p.vf[2] * yf, reading);
   if (!p.smooth) {
     f.m = p.frame * f.m;
     return f;
@@ -41,14 +42,14 @@ Fragment shadePlanar(const Planar& p, double x, double y) {
   return f;
 }
 
-Fragment shadeCurved(const Curved& c, Side side, double x, double y) {
+Fragment shadeCurved(const Curved& c, Side side, TexelReading reading, double x, double y) {
   // The hit point in the shape frame, then the analytic mapping there.
   double z = 0.0;
   castCurved(c, side, x, y, z);
   const Vec3 local = c.origin_local + c.to_local * Vec3(x, y, z);
   const SurfaceFrame sf = surfaceFrameAt(*c.shape, -1, local);
-  Fragment f =
-      sampleMaterial(c.material, static_cast<float>(sf.uv.x()), static_cast<float>(sf.uv.y()));
+  Fragment f = sampleMaterial(c.material, static_cast<float>(sf.uv.x()),
+                              static_cast<float>(sf.uv.y()), reading);
   const Mat3 to_contact = c.to_local.transpose();
   const Vec3 m =
       to_contact * (sf.t * static_cast<double>(f.m.x()) + sf.b * static_cast<double>(f.m.y()) +
@@ -63,8 +64,9 @@ Fragment shadeFragment(const Volume& volume, const SurfaceRaster& raster, int pi
   const int r = volume.resolution;
   const double x = volume.centreX(pixel % r), y = volume.centreX(pixel / r);
   const int32_t id = raster.primitive[static_cast<size_t>(pixel)];
-  if (id >= 0) return shadePlanar(raster.planars[static_cast<size_t>(id)], x, y);
-  return shadeCurved(raster.curveds[static_cast<size_t>(-1 - id)], raster.side, x, y);
+  if (id >= 0) return shadePlanar(raster.planars[static_cast<size_t>(id)], volume.reading, x, y);
+  return shadeCurved(raster.curveds[static_cast<size_t>(-1 - id)], raster.side, volume.reading, x,
+                     y);
 }
 
 namespace {
@@ -167,6 +169,40 @@ template <bool kPow2>
   return top;
 }
 
+// The texel each pixel centre falls in (repeat), as an offset in floats into the map: the
+// nearest reading's one fetch per fragment, straight-line code as chunkTexels.
+template <bool kPow2>
+[[gnu::always_inline]] inline void chunkNearestTexels(const RunSetup& s, const Planar& p,
+                                                      const uint32_t* pixels, size_t n,
+                                                      int* offset) {
+  for (size_t c = 0; c < n; ++c) {
+    const auto i = static_cast<int>(pixels[c] & 0xffffu), j = static_cast<int>(pixels[c] >> 16);
+    const float x = s.base + s.step * static_cast<float>(i);
+    const float y = s.base + s.step * static_cast<float>(j);
+    const int bu = floorInt((p.uf[0] + p.uf[1] * x + p.uf[2] * y) * s.fw + kNearestTexelNudge);
+    const int bv = floorInt((p.vf[0] + p.vf[1] * x + p.vf[2] * y) * s.fh + kNearestTexelNudge);
+    int row, iu;
+    if constexpr (kPow2) {
+      iu = bu & (s.w - 1), row = (bv & (s.h - 1)) << s.lw;
+    } else {
+      iu = wrapTexelBy(bu, s.w, s.inv_w), row = wrapTexelBy(bv, s.h, s.inv_h) * s.w;
+    }
+    offset[c] = 3 * (row + iu);
+  }
+}
+
+// Each fragment's texel through the primitive's constant frame.
+[[gnu::always_inline]] inline void chunkNearestNormals(const float* tex, const Eigen::Matrix3f& f,
+                                                       const int* offset, size_t n,
+                                                       ChunkNormals& m) {
+  for (size_t c = 0; c < n; ++c) {
+    const float* b = tex + offset[c];
+    m.x[c] = f(0, 0) * b[0] + f(0, 1) * b[1] + f(0, 2) * b[2];
+    m.y[c] = f(1, 0) * b[0] + f(1, 1) * b[1] + f(1, 2) * b[2];
+    m.z[c] = f(2, 0) * b[0] + f(2, 1) * b[1] + f(2, 2) * b[2];
+  }
+}
+
 // Bilinear blend (unnormalised, as sampleNormal) through the primitive's constant frame.
 [[gnu::always_inline]] inline void chunkNormals(const float* tex, const Eigen::Matrix3f& f,
                                                 const ChunkTexels& t, size_t n, ChunkNormals& m) {
@@ -254,15 +290,26 @@ void chunkClamped(const ChunkNormals& m, size_t n, Side side, float mu_max, floa
   const float sign = side == Side::B ? 1.0f : -1.0f;
   ChunkTexels texels;
   ChunkNormals normals;
+  const bool nearest = volume.reading == TexelReading::Nearest;
   for (size_t c0 = k0; c0 < k1; c0 += kChunk) {
     const size_t n = std::min(kChunk, k1 - c0);
-    // Four floats from each texel unless the last texel of the map is among them.
-    const int top = setup.pow2 ? chunkTexels<true>(setup, p, pixels.data() + c0, n, texels)
-                               : chunkTexels<false>(setup, p, pixels.data() + c0, n, texels);
-    if (top + 4 <= setup.floats) {
-      chunkNormals4(setup.tex, p.frame, texels, n, normals);
+    const uint32_t* chunk = pixels.data() + c0;
+    if (nearest) {
+      if (setup.pow2) {
+        chunkNearestTexels<true>(setup, p, chunk, n, texels.o00);
+      } else {
+        chunkNearestTexels<false>(setup, p, chunk, n, texels.o00);
+      }
+      chunkNearestNormals(setup.tex, p.frame, texels.o00, n, normals);
     } else {
-      chunkNormals(setup.tex, p.frame, texels, n, normals);
+      // Four floats from each texel unless the last texel of the map is among them.
+      const int top = setup.pow2 ? chunkTexels<true>(setup, p, chunk, n, texels)
+                                 : chunkTexels<false>(setup, p, chunk, n, texels);
+      if (top + 4 <= setup.floats) {
+        chunkNormals4(setup.tex, p.frame, texels, n, normals);
+      } else {
+        chunkNormals(setup.tex, p.frame, texels, n, normals);
+      }
     }
     if (chunkPloughing(normals, n, sign, mu_max, gx + c0, gy + c0) > 0) {
       chunkClamped(normals, n, side, mu_max, gx + c0, gy + c0);

@@ -1,5 +1,6 @@
-// Shading of kept fragments (SPEC 2, 3): the meso normal of the fragment at a pixel (normal map
-// sampled bilinearly with repeat, through the fragment's tangent frame, in the contact frame),
+// Shading of kept fragments (SPEC 2, 3): the meso normal of the fragment at a pixel (the normal
+// map's texel under the pixel, or a bilinear blend: Volume::reading; repeat; through the
+// fragment's tangent frame, in the contact frame),
 // its gain-mask factor, and its ploughing vector g (friction/fragment_model.hpp).
 #pragma once
 

@@ -1,13 +1,17 @@
-// Inline texture lookups of the CPU sampler's fragment loop: bilinear, repeat, the same texel
-// layout as NormalMap::sample (texel centres at (i + 1/2) / W, rows bottom-up). The normal is
-// NOT renormalised: the ploughing vector depends on its direction only (fragment_model.hpp).
+// Inline texture lookups of the CPU sampler's fragment loop, with repeat and the texel layout
+// of NormalMap::sample (texel i covers [i, i + 1) / W, its centre at (i + 1/2) / W, rows
+// bottom-up): the nearest texel (each texel one facet, the default) or the bilinear blend of
+// the four around (FrictionSettings::texel_reading). A blended normal is NOT renormalised: the
+// ploughing vector depends on its direction only (fragment_model.hpp).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 
 #include "asperity/geometry/surface.hpp"
+#include "asperity/sampler/friction_provider.hpp"
 #include "asperity/texture/normal_map.hpp"
+#include "sampler/patch_raster.hpp"
 
 namespace asperity::patch {
 
@@ -50,8 +54,14 @@ inline TexelBracket bracketRepeat(float t, int size) {
   return {lo, lo + 1 == size ? 0 : lo + 1, x - base};
 }
 
+// The texel that coordinate t (in repeats) falls in, wrapped (t is kept small by the callers),
+// looked up kNearestTexelNudge past t.
+inline int nearestTexel(float t, int size) {
+  return wrapTexel(floorInt(t * static_cast<float>(size) + kNearestTexelNudge), size);
+}
+
 // Bilinear normal-map sample at (u, v) in repeats (unnormalised blend).
-[[gnu::always_inline]] inline Vec3f sampleNormal(const NormalMap& map, float u, float v) {
+[[gnu::always_inline]] inline Vec3f sampleNormalBilinear(const NormalMap& map, float u, float v) {
   const TexelBracket bu = bracketRepeat(u, map.width());
   const TexelBracket bv = bracketRepeat(v, map.height());
   const Vec3f* row0 = &map.at(0, bv.lo);
@@ -61,11 +71,23 @@ inline TexelBracket bracketRepeat(float t, int size) {
   return (1.0f - bv.weight) * bottom + bv.weight * top;
 }
 
-// Bilinear gain-mask sample at (u, v) (repeat), >= 0; an empty mask reads 1.
-inline float sampleMask(const GainMask& mask, float u, float v) {
+// The normal of the facet at (u, v), as `reading` reads the map.
+[[gnu::always_inline]] inline Vec3f sampleNormal(const NormalMap& map, float u, float v,
+                                                 TexelReading reading) {
+  if (reading == TexelReading::Bilinear) return sampleNormalBilinear(map, u, v);
+  return map.at(nearestTexel(u, map.width()), nearestTexel(v, map.height()));
+}
+
+// Gain-mask sample at (u, v) (repeat), as `reading` reads it, >= 0; an empty mask reads 1.
+inline float sampleMask(const GainMask& mask, float u, float v, TexelReading reading) {
   if (mask.width <= 0 || mask.height <= 0 ||
       mask.values.size() < static_cast<size_t>(mask.width) * static_cast<size_t>(mask.height)) {
     return 1.0f;
+  }
+  if (reading == TexelReading::Nearest) {
+    const size_t at = static_cast<size_t>(nearestTexel(v, mask.height)) * mask.width +
+                      static_cast<size_t>(nearestTexel(u, mask.width));
+    return std::max(0.0f, mask.values[at]);
   }
   const TexelBracket bu = bracketRepeat(u, mask.width);
   const TexelBracket bv = bracketRepeat(v, mask.height);

@@ -14,12 +14,6 @@ FrictionProviders FrictionProviders::builtIn() {
   providers.add("constant", [] { return std::make_unique<ConstantProvider>(); });
   providers.add("cone", [] { return std::make_unique<ConeProvider>(); });
   providers.add("cpu", [] { return std::make_unique<CpuPatchSampler>(); });
-  // The same sampler with flat patches on flat faces read from tables (docs/samplers.md).
-  providers.add("cpu_planar", [] {
-    CpuSamplerOptions options;
-    options.path = PatchPath::Planar;
-    return std::make_unique<CpuPatchSampler>(options);
-  });
   return providers;
 }
 

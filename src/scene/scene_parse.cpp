@@ -77,6 +77,7 @@ void parseSettings(JsonReader r, SceneDesc& scene) {
   f.patch_width = r.number("patch_width", f.patch_width, Range::positive(kHuge));
   f.patch_resolution = r.integer("patch_resolution", f.patch_resolution, 1, 1024);
   f.reuse_pixels = r.number("reuse_pixels", f.reuse_pixels, Range::nonNegative(kHuge));
+  f.texel_reading = r.enumeration("texel_reading", f.texel_reading, kTexelReadingNames);
   // Any friction provider, sampler or not; the old "sampler" is still read.
   const std::string provider = r.renamed("friction_provider", "sampler");
   scene.friction_provider = r.string(provider, scene.friction_provider);

@@ -182,6 +182,7 @@ json settingsToJson(const SceneDesc& scene) {
           {"patch_width", f.patch_width},
           {"patch_resolution", f.patch_resolution},
           {"reuse_pixels", f.reuse_pixels},
+          {"texel_reading", enumName(f.texel_reading, EnumNames<TexelReading>(kTexelReadingNames))},
           {"friction_provider", scene.friction_provider},
           {"friction_model",
            enumName(scene.friction_model, EnumNames<FrictionModel>(kFrictionModelNames))}};

@@ -21,7 +21,6 @@ void ProfileSums::add(const StepProfile& step) {
   contacts += step.contacts;
   fallbacks += step.fallbacks;
   reused += step.reused;
-  planar += step.planar;
   max_contacts = std::max(max_contacts, step.contacts);
 }
 
@@ -32,8 +31,7 @@ double ProfileSums::meanMs(Stage stage) const {
 std::vector<std::pair<std::string, double>> ProfileSums::means() const {
   const double n = static_cast<double>(std::max<int64_t>(steps, 1));
   std::vector<std::pair<std::string, double>> out = {
-      {"contacts", contacts / n}, {"fallbacks", fallbacks / n}, {"reused", reused / n},
-      {"planar", planar / n}};
+      {"contacts", contacts / n}, {"fallbacks", fallbacks / n}, {"reused", reused / n}};
   for (int i = 0; i < kStageCount; ++i) {
     const auto stage = static_cast<Stage>(i);
     out.emplace_back(std::string(stageName(stage)) + "_ms", meanMs(stage));

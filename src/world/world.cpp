@@ -81,7 +81,6 @@ void World::recordContacts(StepProfile& p) const {
   p.patch_ms = provider_->lastPatchTimeMs();
   p.averaging_ms = provider_->lastAveragingTimeMs();
   p.reused = provider_->lastReusedCount();
-  p.planar = provider_->lastPlanarCount();
   p.contacts = static_cast<int>(contacts_.size());
   p.fallbacks = static_cast<int>(std::count_if(contacts_.begin(), contacts_.end(),
                                                [](const Contact& c) { return c.fallback; }));

@@ -31,7 +31,6 @@ double World::prepare() {
   const auto start = std::chrono::steady_clock::now();
   collision_->setBodies(bodies_, CollisionSettings{settings_.contact_margin});
   slop_ = automaticSlop();
-  provider_->prepare(bodies_, settings_.friction);
   bodies_changed_ = false;
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();

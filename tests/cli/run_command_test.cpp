@@ -98,40 +98,6 @@ TEST(RunCommand, StatsHoldPerStepAverages) {
   EXPECT_LE(per_step["contacts"].get<double>(), 4.0);
 }
 
-TEST(RunCommand, StatsListThePlanarTablesPerTexture) {
-  // stacking.json's three textures (two 128 x 128 maps, one 160 x 160), each with its tables
-  // once, named by their materials; the raster path keeps none.
-  const std::string dir = test::tempDir("run");
-  const std::string scene = test::sourcePath("scenes/stacking.json");
-  ASSERT_EQ(runCli({"run", scene, "--steps", "3", "--sampler", "cpu_planar", "--stats",
-                    dir + "/planar.json"})
-                .exit_code,
-            0);
-  const nlohmann::json planar = nlohmann::json::parse(slurpBinary(dir + "/planar.json"));
-  std::map<std::string, int> widths, levels;
-  size_t total = 0;
-  for (const nlohmann::json& t : planar["tables"]) {
-    widths[t["texture"].get<std::string>()] = t["width"].get<int>();
-    levels[t["texture"].get<std::string>()] = t["levels"].get<int>();
-    EXPECT_EQ(t["width"], t["height"]);
-    EXPECT_FALSE(t["masked"].get<bool>());
-    EXPECT_GT(t["bytes"].get<size_t>(), 0u);
-    total += t["bytes"].get<size_t>();
-  }
-  EXPECT_EQ(widths, (std::map<std::string, int>{{"acrylic", 128}, {"cut_pvc", 128}, {"oak", 160}}));
-  // Coarser levels where footprints read on them stay close to the finest (docs/samplers.md):
-  // all of them for the smooth acrylic, none for the grainier cut PVC and oak.
-  EXPECT_EQ(levels, (std::map<std::string, int>{{"acrylic", 4}, {"cut_pvc", 1}, {"oak", 1}}));
-  EXPECT_EQ(planar["table_bytes"].get<size_t>(), total);
-  ASSERT_EQ(runCli({"run", scene, "--steps", "3", "--sampler", "cpu", "--stats",
-                    dir + "/raster.json"})
-                .exit_code,
-            0);
-  const nlohmann::json raster = nlohmann::json::parse(slurpBinary(dir + "/raster.json"));
-  EXPECT_TRUE(raster["tables"].empty());
-  EXPECT_EQ(raster["table_bytes"], 0);
-}
-
 // The scene file with settings[key] = value, written to a temporary folder beside copies of
 // nothing else (the scene must not use relative files).
 std::string editedScene(const std::string& name, const std::string& key, const std::string& value) {

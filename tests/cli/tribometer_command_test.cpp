@@ -45,10 +45,13 @@ TEST(TribometerCommand, JsonHasEveryDirectionWithItsThreeCoefficients) {
     const nlohmann::json& d = j["directions"][k];
     EXPECT_DOUBLE_EQ(d["angle_deg"].get<double>(), 90.0 * static_cast<double>(k));
     ASSERT_TRUE(d["mu_s"].is_number() && d["mu_k"].is_number() && d["mu_model"].is_number());
-    // mu0 plus the ploughing of two rough surfaces; mu_k delivers mu_model.
+    // mu0 plus the ploughing of two rough surfaces; mu_k delivers mu_model, the plain mean of
+    // the corners' coefficients, to within what one track over 4 mm facets of rms slope 1 lets
+    // the loads lean toward the grippier corners (tests/tribometer/drag_test.cpp holds mu_k to
+    // the load-weighted mean within 1 %).
     EXPECT_GT(d["mu_k"].get<double>(), 0.3);
     EXPECT_NEAR(d["mu_k"].get<double>(), d["mu_model"].get<double>(),
-                0.05 * d["mu_model"].get<double>());
+                0.1 * d["mu_model"].get<double>());
   }
 }
 

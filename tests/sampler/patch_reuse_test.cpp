@@ -49,15 +49,8 @@ TEST(PatchReuse, OnByDefaultAndOffAtZero) {
 // of each contact it kept: the largest difference of any direction's mu, and how many of the
 // kept (contact, direction) pairs differ by more than 0.005.
 class CheckedReuse : public FrictionProvider {
-  static CpuSamplerOptions optionsFor(PatchPath path) {
-    CpuSamplerOptions options;
-    options.path = path;
-    return options;
-  }
-
  public:
-  explicit CheckedReuse(PatchPath path = PatchPath::Raster)
-      : sampler_(optionsFor(path)), reference_(optionsFor(path)) {}
+  CheckedReuse() = default;
   std::string name() const override { return "cpu"; }
   void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                            const FrictionSettings& settings) override {
@@ -89,36 +82,17 @@ TEST(PatchReuse, RestingStackKeepsItsSamplesWithFreshCoefficients) {
   const CheckedReuse& check = *checked;
   world->setFrictionProvider(std::move(checked));
   reusedShare(*world, 200);  // the stacks, hit at 0.2 s, have settled by 2 s
-  EXPECT_GT(reusedShare(*world, 50), 0.8);
+  const double share = reusedShare(*world, 50);
+  std::printf("stacking: reused %.3f, differing pairs %d, beyond 0.005 %d, worst %.4f\n", share,
+              check.kept, check.far, check.worst);
+  EXPECT_GT(share, 0.8);
   // A kept sample is what sampling the contact again would give, to well within mu's scale
-  // (mu 0.2 to 0.4 here): nearly always within 0.005 (a row of pixel centres that a face's
-  // edge crossed within its 0.1 pixel move may make one contact differ by more).
+  // (mu 0.2 to 0.4 here). Each pixel reads one texel's facet, so a pixel centre that crossed a
+  // texel edge within the 0.1 pixel move reads a neighbouring facet in a fresh sample: about
+  // one pair in twenty differs by more than 0.005, by a few hundredths at most, as much as two
+  // fresh samples a tenth of a pixel apart differ (docs/samplers.md, "Patch coherence").
   EXPECT_GT(check.kept, 10000);
-  EXPECT_LT(check.far, check.kept / 1000);
-  EXPECT_LT(check.worst, 0.02);
-}
-
-TEST(PatchReuse, PlanarPathKeepsSamplesWithFreshCoefficients) {
-  // The planar path notes the depth clip's decisions per face (its z range over the patch),
-  // coarser than the raster path's per pixel: a little less is kept. A kept sample may also
-  // meet a fresh one from the other path (a face tilting past 1e-3 rad, a footprint crossing
-  // 32 pixels), which differ by the raster path's sampling error (docs/samplers.md): a few
-  // more pairs beyond 0.005. How many contacts cross those limits depends on the stack's exact
-  // motion (float row sums: 35 pairs of about 18 000; double tables: 71 to 88; with a turned
-  // table: 172 of 18 750): the bound leaves room for that. The worst pair depends on the
-  // trajectory too (0.035 to 0.096 at some versions, 0.056 after the plain-floor reuse; in the
-  // cases examined on contacts the raster path had sampled, their |P| grown by 1 to 11 pixels
-  // while the sample was kept): a row of pixel centres within the tolerated 0.1 pixel of a
-  // face's edge may cross it, and 11 of a corner's 64 pixels move a mean of coefficients
-  // between 0 and 0.6 by up to 0.1. The count of pairs beyond 0.005 is what bounds the stray.
-  auto world = scene("stacking.json", 0.1);
-  auto checked = std::make_unique<CheckedReuse>(PatchPath::Planar);
-  const CheckedReuse& check = *checked;
-  world->setFrictionProvider(std::move(checked));
-  reusedShare(*world, 100);
-  EXPECT_GT(reusedShare(*world, 50), 0.7);
-  EXPECT_GT(check.kept, 10000);
-  EXPECT_LT(check.far, check.kept / 80);
+  EXPECT_LT(check.far, check.kept / 10);
   EXPECT_LT(check.worst, 0.1);
 }
 
@@ -185,11 +159,11 @@ TEST(PatchReuse, TheWormKeepsItsSamplesOnItsPlainFloor) {
   std::printf("crawling_worm: reused %.3f, differing pairs %d, beyond 0.005 %d, worst %.4f\n",
               share, check.kept, check.far, check.worst);
   EXPECT_GT(share, 0.8);
-  // Its sawtooth skin strays as the sawtooth plate does (docs/samplers.md, "Why 0.1 pixel"):
+  // Its sawtooth skin strays as the sawtooth plate does (docs/samplers.md, "Patch coherence"):
   // a tenth of a pixel's move changes a fresh sample by a few hundredths; samples of few
   // pixels, which one pixel would change by far more, are not kept.
   EXPECT_LT(check.far, check.kept / 5);
-  EXPECT_LT(check.worst, 0.05);
+  EXPECT_LT(check.worst, 0.1);
 }
 
 TEST(PatchReuse, SameBitsOnOneAndTwoThreads) {

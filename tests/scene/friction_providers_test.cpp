@@ -20,8 +20,8 @@ struct Renamed : ConstantProvider {
 
 TEST(FrictionProviders, BuiltInProviders) {
   const FrictionProviders providers = FrictionProviders::builtIn();
-  EXPECT_EQ(providers.names(), (std::vector<std::string>{"cone", "constant", "cpu", "cpu_planar"}));
-  for (const char* name : {"constant", "cone", "cpu", "cpu_planar"}) {
+  EXPECT_EQ(providers.names(), (std::vector<std::string>{"cone", "constant", "cpu"}));
+  for (const char* name : {"constant", "cone", "cpu"}) {
     EXPECT_TRUE(providers.has(name)) << name;
     EXPECT_EQ(providers.make(name)->name(), name);
   }
@@ -33,7 +33,7 @@ TEST(FrictionProviders, UnknownNameListsTheAvailableOnes) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(std::string(e.what()),
-              "unknown friction sampler \"velvet\" (available: cone, constant, cpu, cpu_planar)");
+              "unknown friction sampler \"velvet\" (available: cone, constant, cpu)");
   }
 }
 
@@ -44,7 +44,7 @@ TEST(FrictionProviders, AddedFactoryIsUsed) {
   EXPECT_EQ(providers.make("renamed-constant")->name(), "renamed-constant");
   const std::vector<std::string> names = providers.names();
   EXPECT_TRUE(std::is_sorted(names.begin(), names.end()));
-  EXPECT_EQ(names.size(), 5u);
+  EXPECT_EQ(names.size(), 4u);
   EXPECT_THROW(providers.add("", [] { return std::make_unique<Renamed>(); }), Error);
   EXPECT_THROW(providers.add("empty", FrictionProviderFactory()), Error);
 }

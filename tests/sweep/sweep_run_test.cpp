@@ -57,41 +57,6 @@ TEST(SweepRun, ResultsDoNotDependOnTheThreadCount) {
   EXPECT_EQ(subset[1].state_hash, one[2].state_hash);
 }
 
-// A box of oak sliding on an oak plane, friction sampled from both textures by `sampler`.
-SweepDesc texturedSlide(const std::string& sampler) {
-  SweepDesc d = slidingBox(3);
-  d.scene_json = R"({
-    "settings": {"sampler": ")" +
-                 sampler + R"(", "mu0": 0.2, "dt": 0.01, "patch_width": 0.02},
-    "materials": {"oak": {"normal_map": {"generator": "oak", "size": 64, "seed": 3},
-                          "texture_size": 0.2}},
-    "bodies": [
-      {"name": "ground", "type": "static", "shapes": [{"type": "plane", "surface": "oak"}]},
-      {"name": "box", "position": [0, 0, 0.1], "linear_velocity": [1, 0, 0],
-       "shapes": [{"type": "box", "half_extents": [0.1, 0.1, 0.1], "surface": "oak"}]}]})";
-  d.scene_file = "oak_slide.json";
-  d.seconds = 0.8;  // every box stops: its distance is friction's alone
-  return d;
-}
-
-// The planar path is one of the core's samplers: a sweep runs it as a lone world would, on
-// any thread count, and it slides the box as far as the raster path does.
-TEST(SweepRun, ThePlanarSamplerRunsInASweepAsAloneAndAgreesWithTheRasterPath) {
-  const Sweep planar(texturedSlide("cpu_planar")), raster(texturedSlide("cpu"));
-  const auto one = planar.runAll(1), two = planar.runAll(2), reference = raster.runAll(2);
-  EXPECT_EQ(planar.csv(one), planar.csv(two));
-  for (size_t i = 0; i < one.size(); ++i) {
-    const auto index = static_cast<int64_t>(i);
-    const auto alone = instantiate(parseScene(planar.sceneJson(index), "oak_slide.json"));
-    runSteps(*alone, 80);
-    EXPECT_EQ(one[i].state_hash, alone->stateHash()) << "sample " << i;
-    // Another path (its hash differs), the same physics: slide distances within 2 %.
-    EXPECT_NE(one[i].state_hash, reference[i].state_hash) << "sample " << i;
-    EXPECT_TRUE(test::near(one[i].measures[0], reference[i].measures[0], 0.02, 1e-4))
-        << "sample " << i << ": " << one[i].measures[0] << " against " << reference[i].measures[0];
-  }
-}
-
 TEST(SweepRun, CsvHasOneColumnPerValuePoseAndMeasure) {
   const Sweep sweep(slidingBox(2));
   const std::string csv = sweep.csv(sweep.runAll(1));
@@ -133,7 +98,7 @@ TEST(SweepRun, BadSweepsAreRejectedNamingTheCulprit) {
   const size_t sampler = d.scene_json.find("\"constant\"");
   d.scene_json.replace(sampler, 10, "\"gl\"");
   expectError(d,
-              "sampler \"gl\" cannot run in a sweep (available: cone, constant, cpu, cpu_planar)");
+              "sampler \"gl\" cannot run in a sweep (available: cone, constant, cpu)");
   // A scene that is not JSON names its file.
   d = slidingBox(2);
   d.scene_json = "{";

@@ -19,15 +19,18 @@ using test::dragOnly;
 using test::near;
 using test::tribometerPair;
 
-// In each of 16 directions: mu_k = mu_model within 5 %, and within 1 % of the contacts'
+// In each of 16 directions: mu_k = mu_model within 8 %, and within 1 % of the contacts'
 // coefficients weighted by their loads, what the friction adds up to if the solver holds every
-// contact at its bound (0.002 absolute where they are near 0).
+// contact at its bound (0.002 absolute where they are near 0). mu_model is the plain mean over
+// the contacts: each corner's patch reads its own texels' facets, and on the roughest maps here
+// (Gaussian slopes of rms 1, mu near 0.6) the corners' coefficients spread by a tenth and the
+// solver's loads follow them, so the plain mean lies up to 6 % from the load-weighted one.
 void expectKineticEqualsModel(const TribometerSurfaces& surfaces, double mu0) {
   const TribometerSettings settings = dragOnly(16, mu0);
   for (int k = 0; k < 16; ++k) {
     const DragResult d = runDragTest(surfaces, settings, 22.5 * k);
     ASSERT_TRUE(d.mu_k.has_value()) << "no steady sliding at " << 22.5 * k << " deg";
-    EXPECT_TRUE(near(*d.mu_k, d.mu_model, 0.05, 0.002)) << 22.5 * k << " deg";
+    EXPECT_TRUE(near(*d.mu_k, d.mu_model, 0.08, 0.002)) << 22.5 * k << " deg";
     EXPECT_TRUE(near(*d.mu_k, d.mu_loaded, 0.01, 0.002)) << 22.5 * k << " deg";
   }
 }

@@ -28,15 +28,8 @@ namespace asperity {
 namespace patch {
 class MeshCache;
 class PatchReuse;
-class TableCache;
 class HeightCache;
 }  // namespace patch
-
-// How flat patches on flat textured faces (box faces on planes and on each other) are sampled.
-enum class PatchPath {
-  Planar,  // each surface's mean over the footprint from prefiltered tables (docs/samplers.md)
-  Raster,  // every contact rasterised and shaded pixel by pixel (the reference)
-};
 
 // Which friction model the sampler evaluates: the paper's (Eq. 7 with mu0) or the real area
 // of contact (SPEC 13, docs/contact-area.md).
@@ -70,10 +63,6 @@ struct CpuSamplerOptions {
   // Which compiled copy of the rasterising, shading and summing loops runs (the same bits
   // either way; tests compare them).
   SimdCopy simd = SimdCopy::Auto;
-  // Curved and mesh contacts are rasterised either way; so is every contact under the
-  // contact-area model. Registered as "cpu" (Raster, the default) and "cpu_planar" (Planar)
-  // in FrictionProviders::builtIn().
-  PatchPath path = PatchPath::Raster;
   ContactAreaOptions contact_area;
 };
 
@@ -82,18 +71,13 @@ class CpuPatchSampler : public FrictionProvider {
   explicit CpuPatchSampler(const CpuSamplerOptions& options = {});
   ~CpuPatchSampler() override;
 
-  std::string name() const override {
-    return options_.path == PatchPath::Planar ? "cpu_planar" : "cpu";
-  }
+  std::string name() const override { return "cpu"; }
   // Throws asperity::Error for bad settings (validatePatchSettings), a contact naming a body
   // or shape that does not exist, or a surface with a bad texture_size.
   void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                            const FrictionSettings& settings) override;
   // Contacts are sampled in parallel on `pool`, each with its own thread's scratch.
   void setThreadPool(const ThreadPool* pool) override { pool_ = pool; }
-  // The planar path's tables of every textured box and plane of `bodies` (none on the raster
-  // path).
-  void prepare(std::span<const Body> bodies, const FrictionSettings& settings) override;
   // The contact-area model reads each contact's load (any pair that uses it); the paper's
   // model does not.
   bool readsNormalLoads() const override { return options_.contact_area.anyContactArea(); }
@@ -101,9 +85,6 @@ class CpuPatchSampler : public FrictionProvider {
   double lastPatchTimeMs() const override { return patch_ms_; }
   double lastAveragingTimeMs() const override { return averaging_ms_; }
   int lastReusedCount() const override { return reused_count_; }
-  int lastPlanarCount() const override { return planar_count_; }
-  // The planar path's tables, one entry per texture.
-  std::vector<TextureTables> tables() const override;
   void forgetHistory() override;
   void saveHistory(StateWriter& out) const override;
   void loadHistory(StateReader& in) override;
@@ -116,13 +97,9 @@ class CpuPatchSampler : public FrictionProvider {
   struct State;
   void sampleOnPool(std::span<const Body> bodies, std::span<Contact> contacts,
                     const FrictionSettings& settings);
-  void prepareTables(std::span<const Body> bodies, const Contact& contact,
-                     const FrictionSettings& settings);
-  void prepareTables(const Shape& shape, const FrictionSettings& settings);
 
   CpuSamplerOptions options_;
   std::unique_ptr<patch::MeshCache> meshes_;           // shape meshes and BVHs, shared
-  std::unique_ptr<patch::TableCache> tables_;          // planar path tables, shared
   std::unique_ptr<State> state_;                       // the calling thread's scratch
   std::vector<std::unique_ptr<State>> worker_states_;  // one per pool thread
   std::unique_ptr<patch::PatchReuse> reuse_;           // earlier samples (patch coherence)
@@ -132,7 +109,6 @@ class CpuPatchSampler : public FrictionProvider {
   double patch_ms_ = 0.0;
   double averaging_ms_ = 0.0;
   int reused_count_ = 0;
-  int planar_count_ = 0;
 };
 
 }  // namespace asperity

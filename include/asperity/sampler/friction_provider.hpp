@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "asperity/collision/contact.hpp"
@@ -18,14 +19,18 @@ namespace asperity {
 // cones (sampler/cone_provider.hpp), anisotropic from the textures at almost no cost.
 inline constexpr const char* kDefaultFrictionProvider = "cone";
 
-// The tables a provider keeps for one texture (the cpu sampler's planar path): the normal map
-// and gain mask (null: none) they tabulate, and their size.
-struct TextureTables {
-  const NormalMap* map = nullptr;
-  const GainMask* mask = nullptr;
-  size_t bytes = 0;
-  int levels = 1;  // of the coefficient sums: the finest, and the coarser ones kept for it
+// How a patch pixel reads the normal map and gain mask at its uv (docs/samplers.md).
+enum class TexelReading {
+  // The texel the pixel's centre falls in: each texel is one facet, as the paper builds its
+  // materials (one facet per 1 x 1 mm texel) and as the authors' code samples its maps.
+  Nearest,
+  // The four texels around the uv blended before Eq. 5. Eq. 5 is nonlinear in a facet's tilt,
+  // so a blend flattens facets and reads rough maps smoother than their own texels (concrete
+  // about 40 % low); kept to show that difference.
+  Bilinear,
 };
+inline constexpr std::pair<const char*, TexelReading> kTexelReadingNames[] = {
+    {"nearest", TexelReading::Nearest}, {"bilinear", TexelReading::Bilinear}};
 
 // What every provider needs to know (SPEC 3, Eq. 7).
 struct FrictionSettings {
@@ -36,10 +41,14 @@ struct FrictionSettings {
   int patch_resolution = 16;  // R (pixels per side)
   // Patch coherence (cpu and gl samplers): a contact whose surfaces moved by less than this
   // many patch pixels (w / R each) since its patch was sampled keeps that sample; a kept
-  // sample's mu is within about 0.005 of a fresh one (docs/samplers.md). 0: sample every call.
+  // sample's mu differs from a fresh one by what a sub-pixel move changes (pixel centres that
+  // crossed a texel edge read the next facet): mostly below 0.005, a few hundredths at most on
+  // rough maps (docs/samplers.md). 0: sample every call.
   // Samples are matched across calls by the contact's identity (bodies, shapes, key): after
   // changing a body's shapes or surfaces, call forgetHistory() (World::forgetContactHistory).
   double reuse_pixels = 0.1;
+  // How each patch pixel reads the textures (cpu and gl samplers).
+  TexelReading texel_reading = TexelReading::Nearest;
 };
 
 class ThreadPool;  // the world's worker threads (internal)
@@ -52,13 +61,6 @@ class FrictionProvider {
   // The world's worker threads for the next calls (null: the calling thread only). A provider
   // may spread its contacts over them; its results must not depend on how many there are.
   virtual void setThreadPool(const ThreadPool* pool) { (void)pool; }
-  // Builds what the provider keeps per surface (the cpu sampler's planar tables) for these
-  // bodies, before the first step (World::prepare), so that no step pays for it. Optional:
-  // a provider builds what is missing when a contact first needs it.
-  virtual void prepare(std::span<const Body> bodies, const FrictionSettings& settings) {
-    (void)bodies;
-    (void)settings;
-  }
   virtual std::string name() const = 0;
   // Fills mu (count = settings.directions), covered_pixels and fallback of every contact.
   // Contacts already carry their frame (t, b). Body A of a contact is bodies[c.body_a].
@@ -84,16 +86,6 @@ class FrictionProvider {
   virtual double lastAveragingTimeMs() const { return 0.0; }
   // Contacts of the last call that kept an earlier sample (FrictionSettings::reuse_pixels).
   virtual int lastReusedCount() const { return 0; }
-  // Contacts of the last call sampled from prefiltered tables (the cpu sampler's planar path).
-  virtual int lastPlanarCount() const { return 0; }
-  // The tables the provider keeps, one entry per texture (each built once, shared by every
-  // body that uses it), and their bytes all together.
-  virtual std::vector<TextureTables> tables() const { return {}; }
-  size_t tableBytes() const {
-    size_t total = 0;
-    for (const TextureTables& t : tables()) total += t.bytes;
-    return total;
-  }
   // Forgets what earlier calls left behind (kept samples), as in a new provider.
   virtual void forgetHistory() {}
   // What earlier calls left for the next one (kept samples), saved and restored bit for bit

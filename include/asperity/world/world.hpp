@@ -82,7 +82,6 @@ struct StepProfile {
   int contacts = 0;
   int fallbacks = 0;  // contacts whose patch was empty (mu = mu0)
   int reused = 0;     // contacts that kept an earlier patch sample (patch coherence)
-  int planar = 0;     // contacts sampled from prefiltered tables (the cpu sampler's planar path)
 
   double& ms(Stage stage) { return stage_ms[static_cast<size_t>(stage)]; }
   double ms(Stage stage) const { return stage_ms[static_cast<size_t>(stage)]; }
@@ -96,7 +95,7 @@ struct ProfileSums {
   std::array<double, kStageCount> stage_ms{};
   SolveStageTimes solve_ms{};
   double patch_ms = 0.0, averaging_ms = 0.0, total_ms = 0.0;
-  double contacts = 0.0, fallbacks = 0.0, reused = 0.0, planar = 0.0;
+  double contacts = 0.0, fallbacks = 0.0, reused = 0.0;
   int max_contacts = 0;
   double prepare_ms = 0.0;  // World::prepare before the first step: once, not per step
 

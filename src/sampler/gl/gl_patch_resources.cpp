@@ -11,7 +11,7 @@ namespace asperity::glpatch {
 
 namespace {
 
-// A 2D texture with no mipmaps, bilinear filtering and the given wrap.
+// A 2D texture with no mipmaps and the given wrap and filter.
 void setupTexture(GLuint texture, GLint wrap, GLint filter) {
   glBindTexture(GL_TEXTURE_2D, texture);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
@@ -19,6 +19,10 @@ void setupTexture(GLuint texture, GLint wrap, GLint filter) {
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+}
+
+GLint filterOf(TexelReading reading) {
+  return reading == TexelReading::Bilinear ? GL_LINEAR : GL_NEAREST;
 }
 
 }  // namespace
@@ -137,13 +141,14 @@ Readback::~Readback() {
   if (fence_ != nullptr) glDeleteSync(fence_);
 }
 
-GLuint TextureCache::normalMap(const std::shared_ptr<const NormalMap>& map) {
-  auto it = entries_.find(map.get());
+GLuint TextureCache::normalMap(const std::shared_ptr<const NormalMap>& map,
+                               TexelReading reading) {
+  auto it = entries_.find({map.get(), reading});
   if (it != entries_.end()) return it->second.texture;
   // First use: the unit vectors as RGB32F (rows bottom-up, as NormalMap stores them).
-  Entry& e = entries_[map.get()];
+  Entry& e = entries_[{map.get(), reading}];
   e.keep_alive = map;
-  setupTexture(e.texture, GL_REPEAT, GL_LINEAR);
+  setupTexture(e.texture, GL_REPEAT, filterOf(reading));
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, map->width(), map->height(), 0, GL_RGB, GL_FLOAT,
                map->texels().data());
@@ -151,12 +156,12 @@ GLuint TextureCache::normalMap(const std::shared_ptr<const NormalMap>& map) {
   return e.texture;
 }
 
-GLuint TextureCache::mask(const std::shared_ptr<const GainMask>& mask) {
-  auto it = entries_.find(mask.get());
+GLuint TextureCache::mask(const std::shared_ptr<const GainMask>& mask, TexelReading reading) {
+  auto it = entries_.find({mask.get(), reading});
   if (it != entries_.end()) return it->second.texture;
-  Entry& e = entries_[mask.get()];
+  Entry& e = entries_[{mask.get(), reading}];
   e.keep_alive = mask;
-  setupTexture(e.texture, GL_REPEAT, GL_LINEAR);
+  setupTexture(e.texture, GL_REPEAT, filterOf(reading));
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, mask->width, mask->height, 0, GL_RED, GL_FLOAT,
                mask->values.data());

@@ -8,9 +8,11 @@
 
 #include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "asperity/geometry/surface.hpp"
+#include "asperity/sampler/friction_provider.hpp"
 #include "gl/objects.hpp"
 #include "gl/shader.hpp"
 
@@ -85,15 +87,18 @@ class Readback {
 // Textures uploaded once per NormalMap / GainMask (keyed by address, kept alive while cached).
 class TextureCache {
  public:
-  GLuint normalMap(const std::shared_ptr<const NormalMap>& map);
-  GLuint mask(const std::shared_ptr<const GainMask>& mask);
+  // Each texture filtered as `reading` asks: GL_NEAREST (one texel a facet) or GL_LINEAR.
+  GLuint normalMap(const std::shared_ptr<const NormalMap>& map, TexelReading reading);
+  GLuint mask(const std::shared_ptr<const GainMask>& mask, TexelReading reading);
 
  private:
   struct Entry {
     std::shared_ptr<const void> keep_alive;
     gl::Texture texture;
   };
-  std::map<const void*, Entry> entries_;
+  // The texture of one map under one reading: a surface read both ways (two worlds on one
+  // context) keeps two textures rather than resetting its filter at every draw.
+  std::map<std::pair<const void*, TexelReading>, Entry> entries_;
 };
 
 // The patch programs, one per direction-group count (1..7), and the summing programs, one per

@@ -230,8 +230,8 @@ void GlPatchSampler::Impl::collect(std::span<const Body> bodies, std::span<Conta
     vertex_count += chunk.vertices.size();
     for (Draw d : chunk.draws) {
       const auto& map = d.surface->normal_map;
-      d.map = map && !map->empty() ? textures.normalMap(map) : 0;
-      d.mask = d.surface->mask ? textures.mask(d.surface->mask) : 0;
+      d.map = map && !map->empty() ? textures.normalMap(map, settings.texel_reading) : 0;
+      d.mask = d.surface->mask ? textures.mask(d.surface->mask, settings.texel_reading) : 0;
       d.first += static_cast<GLint>(chunk.base);
       draws.push_back(d);
     }
@@ -340,6 +340,8 @@ void GlPatchSampler::Impl::render(const FrictionSettings& settings) {
     program.set("u_tile_pixels", static_cast<float>(settings.patch_resolution));
     program.set("u_atlas_pixels", static_cast<float>(atlas.size()));
     program.set("u_mu_max", settings.mu_max);
+    program.set("u_texel_nudge",
+                settings.texel_reading == TexelReading::Nearest ? patch::kNearestTexelNudge : 0.0f);
     program.set("u_scale", atlas.floatTargets() ? 1.0f : 1.0f / settings.mu_max);
     program.set("u_normal_map", 0);
     program.set("u_mask", 1);

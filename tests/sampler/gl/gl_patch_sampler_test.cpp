@@ -119,7 +119,8 @@ TEST(GlPatchSampler, UsesAndRestoresTheCallersContext) {
 TEST(GlPatchSampler, ReusesTheSamplesOfContactsThatBarelyMoved) {
   // Forty corner contacts sampled, then again after moving half of them by 0.05 pixel and the
   // other half by 2 pixels along t, with reuse_pixels 0.1: the first half keeps its samples
-  // (close to fresh ones: the maps vary little over 0.05 pixel), the second half is rendered
+  // (close to fresh ones: over 0.05 pixel a few pixel centres cross a texel edge of these very
+  // rough maps, slopes up to 1, and read the neighbouring facet), the second half is rendered
   // again (the CPU reference's numbers to RGBA8 rounding).
   Scene scene{{planeBody(roughMap(32, 1), 0.05, 1.0),
                boxBody(Vec3(0.1, 0.1, 0.1), {Vec3(0, 0, 0.1)}, roughMap(32, 2), 0.08, 2.0)},
@@ -144,7 +145,7 @@ TEST(GlPatchSampler, ReusesTheSamplesOfContactsThatBarelyMoved) {
   EXPECT_EQ(sampler.lastReusedCount(), 20);
   for (size_t i = 0; i < moved.size(); ++i)
     for (int k = 0; k < 4; ++k)
-      EXPECT_NEAR(moved[i].mu.mu[k], fresh[i].mu.mu[k], i % 2 == 0 ? 0.02 : kDefaultMuMax / 255.0)
+      EXPECT_NEAR(moved[i].mu.mu[k], fresh[i].mu.mu[k], i % 2 == 0 ? 0.06 : kDefaultMuMax / 255.0)
           << "contact " << i << " k " << k;
   // Forgetting the history samples everything again.
   sampler.forgetHistory();

@@ -1,5 +1,6 @@
-// Eq. 5 per fragment for GROUPS x 4 sample directions (Sec. 4.2): the normal map (bilinear,
-// repeat) through the interpolated tangent frame gives the meso normal in the contact frame,
+// Eq. 5 per fragment for GROUPS x 4 sample directions (Sec. 4.2): the normal map (its texel
+// under the pixel, GL_NEAREST, or a bilinear blend, GL_LINEAR; repeat) through the interpolated
+// tangent frame gives the meso normal in the contact frame,
 // then its ploughing vector g (ploughing.glsl) and mu_k = gain * max(0, g . d_k), scaled by
 // u_scale (1 / mu_max for RGBA8 targets, 1 for float targets). Target 0 marks coverage.
 // GROUPS (1..7) is defined by the program that includes this file.
@@ -21,6 +22,9 @@ uniform float u_mu_max;
 uniform float u_scale;
 uniform float u_half_width;
 uniform float u_pixel;
+// Texels the nearest reading moves its lookup along +u and +v (the CPU's kNearestTexelNudge; 0
+// for the bilinear reading).
+uniform float u_texel_nudge;
 uniform vec2 u_directions[28];  // this pass's directions, GROUPS x 4 used
 
 layout(location = 0) out vec4 o_coverage;
@@ -65,10 +69,16 @@ void main() {
       !insideEdge(v_edge2, centre)) {
     discard;
   }
-  vec3 m_tangent = u_has_map ? texture(u_normal_map, v_uv).xyz : vec3(0.0, 0.0, 1.0);
+  vec3 m_tangent = vec3(0.0, 0.0, 1.0);
+  if (u_has_map) {
+    m_tangent = texture(u_normal_map, v_uv + u_texel_nudge / vec2(textureSize(u_normal_map, 0))).xyz;
+  }
   vec3 m = v_tangent * m_tangent.x + v_bitangent * m_tangent.y + v_normal * m_tangent.z;
   vec2 g = ploughingVector(m, v_side, u_mu_max);
-  float gain = u_has_mask ? max(texture(u_mask, v_uv).r, 0.0) : 1.0;
+  float gain = 1.0;
+  if (u_has_mask) {
+    gain = max(texture(u_mask, v_uv + u_texel_nudge / vec2(textureSize(u_mask, 0))).r, 0.0);
+  }
   o_coverage = vec4(1.0);
   o_mu0 = group(g, gain, 0);
 #if GROUPS > 1
