@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """The tables of docs/materials.md: each material preset's tribometer numbers on itself and on
-steel, with the gains and mu0 of the paper's experiment it comes from, beside SPEC 12's handbook
+steel, with the gains and mu0 of the paper's experiment it comes from, beside the handbook
 ranges, and the gain that brings mu_k into a range it misses.
 
 Usage: PYTHONPATH=build/python /usr/bin/python3 scripts/materials_table.py
@@ -31,7 +31,7 @@ PRESETS = {
     "plastic": ("plastic", 128, 0.1, 4.0, 0.1, "bunnies"),
 }
 
-# SPEC 12's handbook ranges (mu_s, mu_k), (lo, hi) or None, for a (block, plate) pair and what
+# Handbook ranges (dry friction, engineering handbooks) (mu_s, mu_k), (lo, hi) or None, for a (block, plate) pair and what
 # it stands for.
 HANDBOOK = {
     ("steel", "steel"): ("steel on steel", (0.74, 0.80), (0.42, 0.62)),
@@ -117,6 +117,10 @@ def against(folder, block, plate, value, rng, which, mu0, k_plate):
     if target <= mu0:
         return "%s %s: %.2f is below mu0 = %g, no gain reaches it" % (which, status, target, mu0)
     g = gain_for(folder, block, plate, target, mu0, k_plate)
+    if g < 0.0:
+        # mu0 and the plate's texture alone already give more: no block gain comes down to it.
+        return "%s %s: mu0 and the plate (k %g) alone give more than %.2f" % (which, status,
+                                                                            k_plate, target)
     return "%s %s: k %.3g%s gives %.2f" % (which, status, g,
                                            " (both)" if block == plate else " (block)", target)
 
@@ -132,7 +136,7 @@ def row(folder, block, plate):
                          against(folder, block, plate, mu_k, hb_k, "mu_k", mu0, k_plate)) if n]
     return ["`%s` on %s" % (block, "itself" if block == plate else "`%s`" % plate),
             "%s: k %g / %g, mu0 %g" % (experiment, k, k_plate, mu0), span(r["mu_s"]),
-            span(r["mu_k"]), label or "none in SPEC 12", fmt_range(hb_s), fmt_range(hb_k),
+            span(r["mu_k"]), label or "none listed", fmt_range(hb_s), fmt_range(hb_k),
             "; ".join(notes)]
 
 
