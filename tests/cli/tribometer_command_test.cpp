@@ -124,29 +124,6 @@ TEST(TribometerCommand, BadInputIsAOneLineError) {
   expectOneLineError(tribometer({"gen:oak:1", "--load", "-1"}), "--load");
   expectOneLineError(tribometer({"gen:oak:1", "--tests", "spin"}), "--tests");
   expectOneLineError(tribometer({"gen:oak:1", "--sampler", "gl"}), "--sampler");
-  // The reading's option names itself and its two words.
-  const auto reading = tribometer({"gen:oak:1", "--texel-reading", "trilinear"});
-  expectOneLineError(reading, "--texel-reading");
-  EXPECT_NE(reading.err.find("nearest"), std::string::npos) << reading.err;
-  EXPECT_NE(reading.err.find("bilinear"), std::string::npos) << reading.err;
-}
-
-TEST(TribometerCommand, TheBlendedReadingReadsConcreteLow) {
-  // Concrete's 1 mm facets: one texel a pixel gives the whole-texture cone (0.225 in the drag),
-  // a blend of four about 40 % less (docs/samplers.md).
-  auto mu = [](const std::string& reading) {
-    const auto r = tribometer({"gen:concrete:1", "--directions", "4", "--tests", "drag",
-                               "--tracks", "1", "--texel-reading", reading, "--json"});
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    double sum = 0.0;
-    for (const nlohmann::json& d : nlohmann::json::parse(r.out)["directions"])
-      sum += d["mu_k"].get<double>() / 4.0;
-    return sum;
-  };
-  const double nearest = mu("nearest"), blended = mu("bilinear");
-  EXPECT_NEAR(nearest, 0.225, 0.02);
-  EXPECT_GT(blended, 0.5 * nearest);
-  EXPECT_LT(blended, 0.7 * nearest);
 }
 
 }  // namespace
