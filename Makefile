@@ -1,5 +1,5 @@
 # The two commands of the README:
-#   make demo   installs missing Debian packages, builds (Release) into build/, runs the main job
+#   make demo   installs missing Debian packages, builds the CLI (Release) into build/, runs the main job
 #   make test   installs missing Debian packages, builds, runs the whole test suite through CTest
 # Reliability (docs/reliability.md):
 #   make sanitize  the whole test suite built by clang with ASan + UBSan (build-sanitize/)
@@ -28,7 +28,10 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD) -j$(JOBS)
 
-demo: build
+# The demo builds only the command-line tool it runs (the library, the OpenGL renderer of the
+# report's frames), not the tests and benchmarks that `make build` and `make test` add.
+demo: configure
+	@cmake --build $(BUILD) -j$(JOBS) --target asperity_cli
 	@scripts/demo.sh $(BUILD)/bin $(OUT)
 
 # Test tools from the npm registry (obj2gltf); the suite then requires them instead of skipping.

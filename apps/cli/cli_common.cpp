@@ -126,6 +126,17 @@ CLI::Validator notNegative() {
       "NOT NEGATIVE");
 }
 
+CLI::Validator settingRange(const char* field, const SettingRange& range) {
+  return CLI::Validator(
+      [field, range](std::string& text) -> std::string {
+        double value = 0.0;
+        if (!parseDouble(text, value)) return {};
+        const std::string problem = range.check(value);
+        return problem.empty() ? problem : std::string(field) + " " + problem;
+      },
+      range.describe());
+}
+
 CLI::Validator numberInRange(double min, double max) {
   std::ostringstream range;
   range << "[" << min << ", " << max << "]";

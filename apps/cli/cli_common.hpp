@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "asperity/math/enum_names.hpp"
+#include "asperity/sampler/friction_settings.hpp"
 #include "asperity/scene/friction_providers.hpp"
 
 namespace asperity {
@@ -59,6 +60,9 @@ CLI::Validator positiveNumber();
 CLI::Validator notNegative();
 // Accepts finite numbers in [min, max] (NaN rejected), with a message naming the bounds.
 CLI::Validator numberInRange(double min, double max);
+// A friction setting's one range (asperity/sampler/friction_settings.hpp), in the words every
+// front end uses: "patch_resolution must be an integer in [1, 256], got 512".
+CLI::Validator settingRange(const char* field, const SettingRange& range);
 
 // The friction samplers every subcommand offers: the core library's and, when the tool is built
 // with OpenGL, "gl" (each call makes a new table; worlds get their providers from it).

@@ -173,6 +173,19 @@ std::string experimentSection(const Experiment& e, const Outcome& out, const std
   return s + "</p></section>";
 }
 
+// The summary: each experiment's outcome and what was measured.
+std::string summaryTable(const std::vector<Experiment>& list,
+                         const std::vector<Outcome>& outcomes) {
+  std::string summary = "<table><tr><th>experiment</th><th>outcome</th><th>measured</th></tr>";
+  for (size_t i = 0; i < list.size(); ++i)
+    summary += "<tr><td><a href='#" + list[i].id + "'>" + htmlEscape(list[i].title) +
+               "</a></td><td><span class='badge " +
+               (outcomes[i].passed ? "pass'>reproduced" : "fail'>not reproduced") +
+               "</span></td><td style='text-align:left'>" + htmlEscape(outcomes[i].explanation) +
+               "</td></tr>";
+  return summary + "</table>";
+}
+
 void writeReport(const ReportOptions& opt) {
   // Every sampler of the tool ("gl" included), checked before the first experiment runs.
   const FrictionProviders providers = frictionProviders();
@@ -203,14 +216,7 @@ void writeReport(const ReportOptions& opt) {
     sections += experimentSection(e, outcomes.back(), renderFrames(opt, e, dir));
   }
   // The page: summary, one section per experiment, Table 1.
-  std::string summary = "<table><tr><th>experiment</th><th>outcome</th><th>measured</th></tr>";
-  for (size_t i = 0; i < list.size(); ++i)
-    summary += "<tr><td><a href='#" + list[i].id + "'>" + htmlEscape(list[i].title) +
-               "</a></td><td><span class='badge " +
-               (outcomes[i].passed ? "pass'>reproduced" : "fail'>not reproduced") +
-               "</span></td><td style='text-align:left'>" + htmlEscape(outcomes[i].explanation) +
-               "</td></tr>";
-  summary += "</table>";
+  const std::string summary = summaryTable(list, outcomes);
   const std::string html =
       "<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>Asperity: the "
       "paper's experiments</title><style>" +
@@ -222,7 +228,8 @@ void writeReport(const ReportOptions& opt) {
       "</p><p class='sub'>Each patch pixel reads the texel under it as one facet, as the paper "
       "builds its materials (a facet per 1 mm texel, Sec. 5.1); blending four texels before "
       "the friction law, the scene setting <code>\"texel_reading\": \"bilinear\"</code>, reads "
-      "rough maps up to 40 % smoother (docs/samplers.md).</p><section><h2>Summary</h2>" + summary + "</section>" + sections +
+      "rough maps up to 40 % smoother (docs/samplers.md).</p><section><h2>Summary</h2>" +
+      summary + "</section>" + sections +
       "<section id='table1'><h2>Table 1</h2><p class='sub'>Per step, averaged over each run; the "
       "paper's figures (GTX 1650, i9 2.4 GHz) in parentheses.</p>" +
       tableOne(list, outcomes) + "</section></main></body></html>\n";

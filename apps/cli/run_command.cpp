@@ -41,9 +41,9 @@ struct RunOptions {
   std::optional<int> patch_resolution;  // R
   std::optional<int> threads;           // worker threads of a step (0 = every core)
   bool hash = false;
-  std::string save_state;                       // checkpoint written at the end (and periodically)
-  std::string load_state;                       // checkpoint the run continues from
-  std::optional<double> checkpoint_every;       // s of simulated time between checkpoints
+  std::string save_state;                  // checkpoint written at the end (and periodically)
+  std::string load_state;                  // checkpoint the run continues from
+  std::optional<double> checkpoint_every;  // s of simulated time between checkpoints
 };
 
 // Appends the shortest text that reads back to the same double.
@@ -147,7 +147,7 @@ SceneDesc loadWithOverrides(const RunOptions& opt, const FrictionProviders& prov
     scene.settings.limit_surface =
         parseName<LimitSurfaceKind>(opt.friction, kLimitSurfaceNames, "--friction");
   if (!opt.frame.empty())
-    scene.settings.frame_mode = parseName<FrameMode>(opt.frame, kFrameModeNames, "--frame");
+    scene.settings.frame.mode = parseName<FrameMode>(opt.frame, kFrameModeNames, "--frame");
   if (!opt.sampler.empty()) {
     checkSampler(providers, opt.sampler);
     scene.friction_provider = opt.sampler;
@@ -210,9 +210,9 @@ class Checkpoints {
   Checkpoints(const RunOptions& opt, const SceneDesc& scene)
       : path_(opt.save_state),
         scene_id_(opt.save_state.empty() && opt.load_state.empty() ? 0 : sceneStateId(scene)) {
-    if (opt.checkpoint_every) period_ = std::max<int64_t>(1, stepsFor(*opt.checkpoint_every,
-                                                                      scene.settings.dt,
-                                                                      "--checkpoint-every"));
+    if (opt.checkpoint_every)
+      period_ = std::max<int64_t>(
+          1, stepsFor(*opt.checkpoint_every, scene.settings.dt, "--checkpoint-every"));
   }
   void load(World& world, const std::string& path) const { loadStateFile(world, path, scene_id_); }
   void after(const World& world, int64_t step) const {
@@ -311,14 +311,14 @@ void registerRunCommand(CLI::App& app) {
       "--sampler", opt->sampler,
       "Friction provider replacing the scene's friction_provider (constant, cone, cpu, ...)");
   sub->add_option("--directions", opt->directions, "Sample directions N (SPEC 1)")
-      ->check(CLI::Range(kMinDirections, kMaxDirections));
+      ->check(settingRange("directions", friction_range::directions));
   sub->add_option("--patch-width", opt->patch_width, "Patch width w (m, SPEC 3)")
-      ->check(numberInRange(1e-6, 100.0));
+      ->check(settingRange("patch_width", friction_range::patch_width));
   sub->add_option("--threads", opt->threads,
                   "Worker threads of a step (0 = every core); the results do not change")
       ->check(CLI::Range(0, kMaxThreads));
   sub->add_option("--patch-res", opt->patch_resolution, "Patch resolution R (pixels per side)")
-      ->check(CLI::Range(1, 256));
+      ->check(settingRange("patch_resolution", friction_range::patch_resolution));
 
   sub->callback([opt] { runScene(*opt); });
 }

@@ -135,7 +135,7 @@ void addTestOptions(CLI::App* sub, TribometerOptions& opt) {
       ->delimiter(',')
       ->check(CLI::IsMember({"tilt", "drag"}));
   sub->add_option("--mu-max", opt.settings.friction.mu_max, "Clamp of the ploughing term")
-      ->check(numberInRange(1e-3, 1000.0))
+      ->check(settingRange("mu_max", friction_range::mu_max))
       ->capture_default_str();
 }
 

@@ -62,16 +62,16 @@ void addRigOptions(CLI::App* sub, TribometerSettings& s) {
       ->capture_default_str();
   // The friction stage (a scene gives its own).
   sub->add_option("--patch-width", s.friction.patch_width, "Patch width w (m)")
-      ->check(numberInRange(1e-5, 10.0))
+      ->check(settingRange("patch_width", friction_range::patch_width))
       ->capture_default_str();
   sub->add_option("--patch-res", s.friction.patch_resolution, "Patch resolution R (pixels)")
-      ->check(CLI::Range(1, 1024))
+      ->check(settingRange("patch_resolution", friction_range::patch_resolution))
       ->capture_default_str();
   sub->add_option_function<std::string>(
          "--texel-reading",
          [&s](const std::string& name) {
-           s.friction.texel_reading = parseName<TexelReading>(name, kTexelReadingNames,
-                                                              "--texel-reading");
+           s.friction.texel_reading =
+               parseName<TexelReading>(name, kTexelReadingNames, "--texel-reading");
          },
          "How patch pixels read the normal map: nearest (one texel a facet) or bilinear")
       ->check(CLI::IsMember(namesOf<TexelReading>(kTexelReadingNames)))

@@ -91,7 +91,7 @@ void Viewer::settingsPanel() {
   ImGui::SliderFloat("mu_max", &f.mu_max, 0.5f, 8.0f, "%.2f");
   // Limit surface and frame (SPEC 4, 5).
   enumCombo("limit surface", s.limit_surface, kLimitSurfaceNames);
-  enumCombo("frame mode", s.frame_mode, kFrameModeNames);
+  enumCombo("frame mode", s.frame.mode, kFrameModeNames);
   ImGui::SliderInt("iterations", &s.iterations, 1, 200);
   // The friction provider.
   const std::string current = world_->frictionProvider().name();

@@ -30,7 +30,8 @@ double slide(float speed) {
   world.addRigidBody(&box);
   {
     // Asperity's friction: a sawtooth on the ground (ridges across x), the box flat.
-    asperity::ContactFrictionSettings settings;  // mu0 0.2, CPU sampler, world frame
+    asperity::ContactFrictionSettings settings;  // mu0 0.2, world frame
+    settings.provider = "cpu";                   // the patch sampler (default: cones)
     asperity::BulletFriction friction(world, settings);
     asperity::Surface sawtooth;
     sawtooth.source.generator = {"sawtooth", {{"period", "16"}, {"axis", "0"}}, 128, 1};

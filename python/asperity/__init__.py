@@ -108,7 +108,7 @@ def _run_chunk(args, indices):
 def _check_int(value, name, low):
     _check_type_int(value, name)
     if value < low:
-        raise ValueError("--%s must be >= %d, got %d" % (name, low, value))
+        raise ValueError("%s must be >= %d, got %d" % (name, low, value))
     return int(value)
 
 

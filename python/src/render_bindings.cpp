@@ -13,8 +13,8 @@ namespace asperity::python {
 py::array_t<uint8_t> renderWorld(const PyWorld& w, int width, int height, const py::object& camera,
                                  int samples) {
   if (width < 16 || height < 16 || width > 8192 || height > 8192)
-    throwValue("render: --size " + std::to_string(width) + "x" + std::to_string(height) +
-               ": width and height must be in 16..8192");
+    throwValue("render: width and height must be in 16..8192, got " + std::to_string(width) +
+               " x " + std::to_string(height));
   if (samples < 1 || samples > 16) throwValue("render: samples must be in 1..16");
 #ifdef ASPERITY_HAVE_RENDER
   // camera: six numbers eye, target (as --camera), else the scene's, else one framing bodies.

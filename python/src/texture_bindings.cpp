@@ -5,6 +5,7 @@
 #include "asperity/error.hpp"
 #include "asperity/friction/limit_surface.hpp"
 #include "asperity/friction/patch_cone.hpp"
+#include "asperity/sampler/friction_settings.hpp"
 #include "asperity/texture/generators.hpp"
 #include "asperity/texture/png_io.hpp"
 #include "bindings.hpp"
@@ -72,10 +73,10 @@ py::array_t<float> generate(const std::string& name, int size, uint64_t seed,
   spec.name = name;
   spec.size = size;
   spec.seed = seed;
-  if (size < 1 || size > kMaxTextureSize) throwValue("--size must be in 1..8192");
+  if (size < 1 || size > kMaxTextureSize) throwValue("size must be in 1..8192, got " + std::to_string(size));
   // Parameters as the CLI's text (numbers and paths alike).
   for (const auto& [key, value] : params) {
-    if (py::isinstance<py::bool_>(value)) throwType("--" + key.cast<std::string>() + ": a bool");
+    if (py::isinstance<py::bool_>(value)) throwType(key.cast<std::string>() + " must be a number or a path, got a bool");
     spec.params[key.cast<std::string>()] = py::str(value).cast<std::string>();
   }
   NormalMap map;
@@ -88,13 +89,13 @@ py::array_t<float> generate(const std::string& name, int size, uint64_t seed,
 
 py::dict cone(const py::handle& b, const py::handle& a, int directions, double k_a, double k_b,
               double mu0, double mu_max) {
-  if (directions < kMinDirections || directions > kMaxDirections)
-    throwValue("--directions: must be in 4..64");
+  if (const std::string bad = friction_range::directions.check(directions); !bad.empty())
+    throwValue("directions " + bad);
   if (!(k_a >= 0.0 && k_a <= 1000.0) || !(k_b >= 0.0 && k_b <= 1000.0) ||
       !(mu0 >= 0.0 && mu0 <= 1000.0))
-    throwValue("--k-a, --k-b and --mu0 must be finite numbers in [0, 1000]");
-  if (!(mu_max > 0.0 && mu_max <= 1000.0))
-    throwValue("--mu-max must be a finite number in (0, 1000]");
+    throwValue("k_a, k_b and mu0 must be finite numbers in [0, 1000]");
+  if (const std::string bad = friction_range::mu_max.check(mu_max); !bad.empty())
+    throwValue("mu_max " + bad);
   const NormalMap map_b = mapArg(b, "b");
   std::optional<NormalMap> map_a;
   if (!a.is_none()) map_a = mapArg(a, "a");

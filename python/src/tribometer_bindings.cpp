@@ -48,7 +48,7 @@ py::dict resultDict(const TribometerResult& r) {
 void chooseTests(const std::vector<std::string>& tests, TribometerSettings& settings) {
   settings.tilt = settings.drag = false;
   for (const std::string& t : tests) {
-    if (t != "tilt" && t != "drag") throwValue("--tests: unknown test '" + t + "' (tilt, drag)");
+    if (t != "tilt" && t != "drag") throwValue("tests: unknown test '" + t + "' (tilt, drag)");
     (t == "tilt" ? settings.tilt : settings.drag) = true;
   }
 }
@@ -61,7 +61,7 @@ TribometerSource makeSource(const py::handle& b, const py::handle& a, const py::
   TribometerSource source;
   source.plate = textureText(b), source.block = textureText(a);
   source.scene = textureText(scene);
-  if (!bodies.empty() && bodies.size() != 2) throwValue("--bodies: expected two body names");
+  if (!bodies.empty() && bodies.size() != 2) throwValue("bodies: expected two body names, got " + std::to_string(bodies.size()));
   if (bodies.size() == 2) source.block_body = bodies[0], source.plate_body = bodies[1];
   source.k_a = k_a, source.k_b = k_b, source.mu0 = mu0;
   source.texture_size = texture_size;
@@ -146,7 +146,7 @@ void defineCalibrate(py::module_& m) {
          double load, int tracks, int threads, std::optional<std::string> sampler,
          const py::handle& write) {
         if (model != "sampler" && model != "cone")
-          throwValue("--model: must be sampler or cone, got '" + model + "'");
+          throwValue("model: must be sampler or cone, got '" + model + "'");
         const TribometerSource source =
             makeSource(b, a, scene, bodies, k_a, k_b, mu0, texture_size, sampler);
         const TribometerSettings settings =

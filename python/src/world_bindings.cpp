@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "asperity/error.hpp"
+#include "asperity/sampler/friction_settings.hpp"
 #include "asperity/scene/friction_providers.hpp"
 #include "asperity/world/run_loop.hpp"
 #include "world_state.hpp"
@@ -31,8 +32,8 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
                                    std::optional<std::string> friction,
                                    std::optional<std::string> frame, std::optional<int> directions,
                                    std::optional<double> patch_width,
-                                   std::optional<int> patch_resolution,
-                                   std::optional<int> threads, const py::object& state) {
+                                   std::optional<int> patch_resolution, std::optional<int> threads,
+                                   const py::object& state) {
   // Scenes may ask for the core samplers and, when built with OpenGL, "gl".
   InstantiateOptions options;
 #ifdef ASPERITY_HAVE_RENDER
@@ -43,7 +44,7 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
   WorldSettings& s = w->scene.settings;
   if (friction)
     s.limit_surface = lookup<LimitSurfaceKind>(kLimitSurfaceNames, *friction, "friction");
-  if (frame) s.frame_mode = lookup<FrameMode>(kFrameModeNames, *frame, "frame");
+  if (frame) s.frame.mode = lookup<FrameMode>(kFrameModeNames, *frame, "frame");
   if (sampler) {
     if (!options.providers.has(*sampler)) {
       try {
@@ -54,12 +55,6 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
     }
     w->scene.friction_provider = *sampler;
   }
-  if (directions && (*directions < kMinDirections || *directions > kMaxDirections))
-    throwValue("directions: must be in 4..64, got " + std::to_string(*directions));
-  if (patch_width && !(std::isfinite(*patch_width) && *patch_width > 0.0))
-    throwValue("patch_width: must be a finite number > 0 (m)");
-  if (patch_resolution && (*patch_resolution < 1 || *patch_resolution > 4096))
-    throwValue("patch_resolution: must be in 1..4096");
   if (threads && (*threads < 0 || *threads > kMaxThreads))
     throwValue("threads: must be in 0.." + std::to_string(kMaxThreads) + " (0 = every core), got " +
                std::to_string(*threads));
@@ -67,6 +62,8 @@ std::unique_ptr<PyWorld> makeWorld(const py::handle& scene_arg, std::optional<st
   if (directions) s.friction.directions = *directions;
   if (patch_width) s.friction.patch_width = *patch_width;
   if (patch_resolution) s.friction.patch_resolution = *patch_resolution;
+  // The ranges every front end shares (the same words as a scene's or the CLI's).
+  if (const auto bad = firstInvalidSetting(s.friction)) throwValue(bad->field + " " + bad->message);
   w->world = instantiate(w->scene, options);
   // The scene's and the world's warnings become Python warnings, now and as they come.
   w->world->diagnostics().setSink(warn);
@@ -163,18 +160,48 @@ void bindWorldActions(py::class_<PyWorld>& world) {
       });
 }
 
+// The clock and the state arrays (assigning any of them restarts from that state).
+void bindWorldState(py::class_<PyWorld>& world) {
+  world
+      .def_property_readonly(
+          "time", [](const PyWorld& w) { return w.world->time(); }, "Simulated time (s).")
+      .def_property_readonly(
+          "step_count", [](const PyWorld& w) { return w.world->stepCount(); }, "Steps taken.")
+      .def_property_readonly(
+          "dt", [](const PyWorld& w) { return w.world->settings().dt; }, "Time step (s).")
+      .def_property_readonly(
+          "body_names",
+          [](const PyWorld& w) {
+            py::list names;
+            for (const Body& b : w.world->bodies()) names.append(b.name);
+            return names;
+          },
+          "Names of the bodies in scene order (the rows of the state arrays).")
+      .def_property("positions", &positions, &setPositions,
+                    "(B, 3) float64: origin of each body's frame as the scene wrote it (m). "
+                    "Assigning any state array restarts from that state: the contact history "
+                    "of earlier steps is forgotten, so worlds set to one state evolve alike.")
+      .def_property("orientations", &orientations, &setOrientations,
+                    "(B, 4) float64: unit quaternion w, x, y, z of each body's frame.")
+      .def_property("linear_velocities", &linearVelocities, &setLinearVelocities,
+                    "(B, 3) float64: velocity of each body frame's origin (m/s).")
+      .def_property("angular_velocities", &angularVelocities, &setAngularVelocities,
+                    "(B, 3) float64: angular velocity, world frame (rad/s).");
+}
+
 }  // namespace
 
 void bindWorld(py::module_& m) {
-  py::class_<PyWorld> world(m, "World",
-                            "A simulation world built from a scene (a path, a dict or an "
-                            "asperity.Scene).\n\nKeyword overrides match `asperity run`: sampler "
-                            "(constant, cone, cpu, gl), friction (coulomb, box, polygon), frame "
-                            "(world, body, auto, texture), directions N, patch_width w (m), "
-                            "patch_resolution R, threads (worker threads of a step, 0 = every "
-                            "core; the results are the same bits for any count). state: a checkpoint file "
-                            "(save_state, `asperity run --save-state`) to continue from, bit for "
-                            "bit.");
+  py::class_<PyWorld> world(
+      m, "World",
+      "A simulation world built from a scene (a path, a dict or an "
+      "asperity.Scene).\n\nKeyword overrides match `asperity run`: sampler "
+      "(constant, cone, cpu, gl), friction (coulomb, box, polygon), frame "
+      "(world, body, auto, texture), directions N, patch_width w (m), "
+      "patch_resolution R, threads (worker threads of a step, 0 = every "
+      "core; the results are the same bits for any count). state: a checkpoint file "
+      "(save_state, `asperity run --save-state`) to continue from, bit for "
+      "bit.");
   // Construction, stepping and the state arrays.
   world
       .def(py::init(&makeWorld), py::arg("scene"), py::kw_only(), py::arg("sampler") = py::none(),
@@ -208,31 +235,8 @@ void bindWorld(py::module_& m) {
             return w.world->prepare();
           },
           "Builds the collision objects and signed distance fields now rather than in the next "
-          "step; returns the ms it took (0 when nothing changed since the last build).")
-      .def_property_readonly(
-          "time", [](const PyWorld& w) { return w.world->time(); }, "Simulated time (s).")
-      .def_property_readonly(
-          "step_count", [](const PyWorld& w) { return w.world->stepCount(); }, "Steps taken.")
-      .def_property_readonly(
-          "dt", [](const PyWorld& w) { return w.world->settings().dt; }, "Time step (s).")
-      .def_property_readonly(
-          "body_names",
-          [](const PyWorld& w) {
-            py::list names;
-            for (const Body& b : w.world->bodies()) names.append(b.name);
-            return names;
-          },
-          "Names of the bodies in scene order (the rows of the state arrays).")
-      .def_property("positions", &positions, &setPositions,
-                    "(B, 3) float64: origin of each body's frame as the scene wrote it (m). "
-                    "Assigning any state array restarts from that state: the contact history "
-                    "of earlier steps is forgotten, so worlds set to one state evolve alike.")
-      .def_property("orientations", &orientations, &setOrientations,
-                    "(B, 4) float64: unit quaternion w, x, y, z of each body's frame.")
-      .def_property("linear_velocities", &linearVelocities, &setLinearVelocities,
-                    "(B, 3) float64: velocity of each body frame's origin (m/s).")
-      .def_property("angular_velocities", &angularVelocities, &setAngularVelocities,
-                    "(B, 3) float64: angular velocity, world frame (rad/s).");
+          "step; returns the ms it took (0 when nothing changed since the last build).");
+  bindWorldState(world);
   bindWorldActions(world);
 }
 

@@ -66,7 +66,7 @@ def test_bad_rollouts_are_rejected(minimal_scene):
         asperity.rollout(minimal_scene, 2, 3, actions={"push": {"box": np.zeros((2, 3, 3))}})
     with pytest.raises(ValueError, match="no body named 'ghost'"):
         asperity.rollout(minimal_scene, 2, 3, actions={"force": {"ghost": np.zeros((2, 3, 3))}})
-    with pytest.raises(ValueError, match="--steps must be >= 0"):
+    with pytest.raises(ValueError, match="steps must be >= 0"):
         asperity.rollout(minimal_scene, 2, -1)
     with pytest.raises(TypeError):
         asperity.rollout(minimal_scene, 2, 3, actions=[1, 2])

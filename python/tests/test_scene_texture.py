@@ -117,3 +117,15 @@ def test_bad_texture_arguments_raise():
                       directions=2)
     with pytest.raises(ValueError, match="z >= 0"):
         asperity.cone(np.full((2, 2, 3), np.nan))
+
+
+def test_a_friction_setting_out_of_range_gets_the_words_of_every_front_end(minimal_scene):
+    # The same words as a scene's, the CLI's and ContactFriction's (one range per field).
+    words = r"patch_resolution must be an integer in \[1, 256\], got 512"
+    with pytest.raises(ValueError, match=words):
+        asperity.World(minimal_scene, patch_resolution=512)
+    scene = dict(minimal_scene, settings={"patch_resolution": 512})
+    with pytest.raises(ValueError, match="/settings/patch_resolution: " + words[len("patch_resolution "):]):
+        asperity.World(scene)
+    with pytest.raises(ValueError, match=r"directions must be an integer in \[4, 64\], got 2"):
+        asperity.World(minimal_scene, directions=2)

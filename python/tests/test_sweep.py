@@ -63,7 +63,7 @@ def test_bad_sweeps_raise_with_the_cli_messages(minimal_scene, tmp_path):
         assert "--vary" + str(e.value).removeprefix("variation") == cli_error(
             "sweep", path, "--vary", path_ + "=" + spec, "--samples", 2, "--seconds", 0.1,
             "--out", tmp_path / "o.csv")
-    with pytest.raises(ValueError, match="--samples"):
+    with pytest.raises(ValueError, match="samples must be >= 1"):
         asperity.sweep(minimal_scene, samples=0)
     with pytest.raises(TypeError):
         asperity.sweep(minimal_scene, samples=2.5)

@@ -148,8 +148,8 @@ ContactFrictionSettings settingsOf(const asperity_friction_settings& s) {
   out.provider = s.provider ? s.provider : "";
   if (s.frame_mode < 0 || s.frame_mode > ASPERITY_FRAME_TEXTURE)
     throw Error("contact friction settings: unknown frame mode " + std::to_string(s.frame_mode));
-  out.frame_mode = static_cast<FrameMode>(s.frame_mode);
-  out.world_axis = vec3(s.world_axis);
+  out.frame.mode = static_cast<FrameMode>(s.frame_mode);
+  out.frame.world_axis = vec3(s.world_axis);
   out.threads = s.threads;
   return out;
 }
@@ -197,7 +197,7 @@ void asperity_friction_default_settings(asperity_friction_settings* settings) {
   settings->patch_width = d.friction.patch_width;
   settings->patch_resolution = d.friction.patch_resolution;
   settings->reuse_pixels = d.friction.reuse_pixels;
-  settings->provider = "cpu";
+  settings->provider = kDefaultFrictionProvider;
   settings->frame_mode = ASPERITY_FRAME_WORLD;
   settings->world_axis[0] = 1.0;
   settings->threads = d.threads;

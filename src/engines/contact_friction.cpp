@@ -31,19 +31,11 @@ struct Senses {
 constexpr uint64_t kRankKey = uint64_t{1} << 63;
 
 void checkSettings(const ContactFrictionSettings& s) {
-  const FrictionSettings& f = s.friction;
   auto fail = [](const std::string& what) { throw Error("contact friction settings: " + what); };
-  if (f.directions < 4 || f.directions > kMaxDirections)
-    fail("directions must be in 4.." + std::to_string(kMaxDirections));
-  if (!(f.mu0 >= 0.0) || !std::isfinite(f.mu0)) fail("mu0 must be a finite number >= 0");
-  if (!(f.patch_width > 0.0) || !std::isfinite(f.patch_width))
-    fail("patch_width must be a finite number > 0");
-  if (f.patch_resolution < 1 || f.patch_resolution > 1024)
-    fail("patch_resolution must be in 1..1024");
-  if (!(f.reuse_pixels >= 0.0)) fail("reuse_pixels must be >= 0");
+  validate(s.friction, "contact friction settings");
   if (s.threads < 0 || s.threads > kMaxThreads)
     fail("threads must be in 0.." + std::to_string(kMaxThreads) + " (0 = every core)");
-  if (!(s.sliding_speed >= 0.0)) fail("sliding_speed must be >= 0");
+  if (!(s.frame.sliding_speed >= 0.0)) fail("sliding_speed must be >= 0");
 }
 
 // The body that stands for an object: its shapes and where it is; no mass (nothing here
@@ -145,9 +137,9 @@ void ContactFriction::Impl::assignRankKeys(std::span<const EngineContact> in) {
 void ContactFriction::Impl::setFrames() {
   FrameInputs in;
   in.bodies = bodies;
-  in.world_axis = settings.world_axis;
-  in.fallback_axis = settings.fallback_axis;
-  in.sliding_speed = settings.sliding_speed;
+  in.world_axis = settings.frame.world_axis;
+  in.fallback_axis = settings.frame.fallback_axis;
+  in.sliding_speed = settings.frame.sliding_speed;
   // Frame mode Auto: the engine's own velocities stand for the prediction, gathered only when
   // the mode asks, into buffers kept across calls.
   in.predict_velocities = [this](std::span<const Contact>) {
@@ -159,7 +151,7 @@ void ContactFriction::Impl::setFrames() {
     }
     return PredictedVelocities{linear, angular};
   };
-  computeContactFrames(settings.frame_mode, in, contacts, pool.get());
+  computeContactFrames(settings.frame.mode, in, contacts, pool.get());
 }
 
 void ContactFriction::Impl::fillResults(std::span<const EngineContact> in) {
@@ -184,7 +176,7 @@ void ContactFriction::Impl::fillResults(std::span<const EngineContact> in) {
                          [](const auto& e, const SenseKey& k) { return e.first < k; });
     const Senses before = last != senses.end() && last->first == key ? last->second : Senses{};
     const double vt = r.sliding.dot(c.t), vb = r.sliding.dot(c.b);
-    const double speed = settings.sliding_speed;
+    const double speed = settings.frame.sliding_speed;
     r.symmetric_t = symmetricCoefficient(r.bounds.mu_pos_t, r.bounds.mu_neg_t, vt, before.t, speed);
     r.symmetric_b = symmetricCoefficient(r.bounds.mu_pos_b, r.bounds.mu_neg_b, vb, before.b, speed);
     // Remember the senses for the steps this contact rests.

@@ -25,26 +25,17 @@ ContactFrictionSettings parseSettings(JsonReader r) {
              "the engine's own friction coefficient of a pair is mu0 (set it in the engine's "
              "model or near callback)");
   f.mu0 = 0.0;
-  f.directions = r.integer("directions", f.directions, 4, kMaxDirections);
-  f.mu_max = static_cast<float>(
-      r.number("mu_max", static_cast<double>(f.mu_max), Range::leftOpen(0.0, 1000.0)));
-  f.patch_width = r.number("patch_width", f.patch_width, Range::positive(scene::kHuge));
-  f.patch_resolution = r.integer("patch_resolution", f.patch_resolution, 1, 1024);
-  f.reuse_pixels = r.number("reuse_pixels", f.reuse_pixels, Range::nonNegative(scene::kHuge));
-  f.texel_reading = r.enumeration("texel_reading", f.texel_reading, kTexelReadingNames);
+  scene::parseFrictionSettings(r, f);
   s.provider = r.string("friction_provider", s.provider);
-  s.frame_mode = r.enumeration("frame_mode", s.frame_mode, kFrameModeNames);
-  s.world_axis = r.direction("world_axis", s.world_axis);
-  s.fallback_axis = r.direction("fallback_axis", s.fallback_axis);
-  s.sliding_speed = r.number("sliding_speed", s.sliding_speed, Range::nonNegative(scene::kHuge));
+  scene::parseFrameSettings(r, s.frame);
   s.threads = r.integer("threads", s.threads, 0, kMaxThreads);
   r.finish();
   return s;
 }
 
 // One "surfaces" entry, its normal map resolved; resolving errors name the entry.
-EngineSurface parseEntry(JsonReader& surfaces, const std::string& name,
-                         const std::string& base_dir, Diagnostics& diagnostics) {
+EngineSurface parseEntry(JsonReader& surfaces, const std::string& name, const std::string& base_dir,
+                         Diagnostics& diagnostics) {
   EngineSurface entry{name, scene::parseSurface(surfaces.object(name), base_dir)};
   try {
     resolveSurface(entry.surface, diagnostics);

@@ -77,7 +77,7 @@ Recording simulate(SceneDesc scene, const std::string& file, double seconds,
   const std::string path = (std::filesystem::path(options.scenes_dir) / file).string();
   if (!options.sampler.empty()) scene.friction_provider = options.sampler;
   if (options.threads) scene.settings.threads = *options.threads;
-  if (frame) scene.settings.frame_mode = *frame;
+  if (frame) scene.settings.frame.mode = *frame;
   Recording rec;
   rec.world = instantiate(scene, InstantiateOptions{options.providers});
   rec.profile = startProfile(file, scene, seconds);

@@ -76,10 +76,9 @@ bool ContactAreaOptions::anyContactArea() const {
 struct CpuPatchSampler::State {
   State(patch::MeshCache& shared, const CpuSamplerOptions& opt,
         const patch::HeightCache& height_cache)
-      : meshes(shared), simd(opt.simd), area(opt.contact_area),
-        heights(height_cache) {}
-  patch::MeshCache& meshes;         // the sampler's, shared by every thread's state
-  SimdCopy simd;                    // the sampler's option, for every loop this state runs
+      : meshes(shared), simd(opt.simd), area(opt.contact_area), heights(height_cache) {}
+  patch::MeshCache& meshes;           // the sampler's, shared by every thread's state
+  SimdCopy simd;                      // the sampler's option, for every loop this state runs
   const ContactAreaOptions& area;     // the sampler's option
   const patch::HeightCache& heights;  // the sampler's, shared (read only while sampling)
   patch::AreaScratch area_scratch;
@@ -290,7 +289,7 @@ CpuPatchSampler::~CpuPatchSampler() = default;
 
 void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& contact,
                                     const FrictionSettings& settings, PatchImages* images) {
-  validatePatchSettings(settings, "cpu sampler");
+  validate(settings, "cpu sampler");
   if (modelOf(options_.contact_area, bodies, contact) == FrictionModel::ContactArea)
     heights_->prepare(bodies, contact);
   state_->sample(bodies, contact, settings, images);
@@ -298,7 +297,7 @@ void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& conta
 
 void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                                           const FrictionSettings& settings) {
-  validatePatchSettings(settings, "cpu sampler");
+  validate(settings, "cpu sampler");
   // Contacts whose earlier sample still holds keep it; the others are sampled.
   reuse_->reuse(bodies, contacts, settings, reused_);
   reused_count_ = static_cast<int>(std::count(reused_.begin(), reused_.end(), uint8_t{1}));

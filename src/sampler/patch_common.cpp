@@ -1,4 +1,4 @@
-// Shared pieces of the patch samplers (patch_common.hpp) and the settings check.
+// Shared pieces of the patch samplers (patch_common.hpp).
 #include "sampler/patch_common.hpp"
 
 #include <array>
@@ -9,36 +9,6 @@
 #include "asperity/sampler/patch_sampler.hpp"
 
 namespace asperity {
-
-void validatePatchSettings(const FrictionSettings& s, const std::string& who,
-                           bool directions_multiple_of_4) {
-  // Each parameter against its documented range, named in the message.
-  const double w = s.patch_width;
-  if (!std::isfinite(w) || w < kMinPatchWidth || w > kMaxPatchWidth) {
-    throw Error(who + ": patch_width must be in [1e-6, 100] m, got " + std::to_string(w));
-  }
-  if (s.patch_resolution < 1 || s.patch_resolution > kMaxPatchResolution) {
-    throw Error(who + ": patch_resolution must be in [1, 256], got " +
-                std::to_string(s.patch_resolution));
-  }
-  if (s.directions < kMinDirections || s.directions > kMaxDirections) {
-    throw Error(who + ": directions must be in [4, 64], got " + std::to_string(s.directions));
-  }
-  if (directions_multiple_of_4 && s.directions % 4 != 0) {
-    throw Error(who + ": directions must be a multiple of 4 (one RGBA target per 4), got " +
-                std::to_string(s.directions));
-  }
-  if (!std::isfinite(s.mu_max) || !(s.mu_max > 0.0f)) {
-    throw Error(who + ": mu_max must be positive and finite, got " + std::to_string(s.mu_max));
-  }
-  if (!std::isfinite(s.mu0) || s.mu0 < 0.0) {
-    throw Error(who + ": mu0 must be finite and >= 0, got " + std::to_string(s.mu0));
-  }
-  if (!std::isfinite(s.reuse_pixels) || s.reuse_pixels < 0.0) {
-    throw Error(who + ": reuse_pixels must be finite and >= 0, got " +
-                std::to_string(s.reuse_pixels));
-  }
-}
 
 namespace patch {
 

@@ -25,6 +25,13 @@ std::string resolvePath(const std::string& base_dir, const std::string& file);
 double degreesFromRadians(double radians);
 double radiansFromDegrees(double degrees);
 
+// The friction settings of a "settings" object (directions, mu0, mu_max, patch_width,
+// patch_resolution, reuse_pixels, texel_reading) over `f`: types checked here, ranges by the
+// one check every front end shares (asperity/sampler/friction_settings.hpp), at the key.
+void parseFrictionSettings(JsonReader& r, FrictionSettings& f);
+// The frame settings of a "settings" object: frame_mode (the old "frame" still read),
+// world_axis, fallback_axis, sliding_speed (the old "auto_frame_speed" still read).
+void parseFrameSettings(JsonReader& r, FrameSettings& f);
 // Parses the "materials" table (named surfaces), before the bodies that refer to it.
 void parseMaterials(JsonReader& root, SceneDesc& scene);
 // A "surface" object (normal map file or generator, gain, texture size and rotation, mask, base

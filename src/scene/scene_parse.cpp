@@ -25,6 +25,31 @@ std::string resolvePath(const std::string& base_dir, const std::string& file) {
   return (std::filesystem::path(base_dir) / p).lexically_normal().string();
 }
 
+void parseFrameSettings(JsonReader& r, FrameSettings& f) {
+  f.mode = r.enumeration(r.renamed("frame_mode", "frame"), f.mode, kFrameModeNames);
+  f.world_axis = r.direction("world_axis", f.world_axis);
+  f.fallback_axis = r.direction("fallback_axis", f.fallback_axis);
+  f.sliding_speed = r.number(r.renamed("sliding_speed", "auto_frame_speed"), f.sliding_speed,
+                             Range::nonNegative(kHuge));
+}
+
+void parseFrictionSettings(JsonReader& r, FrictionSettings& f) {
+  // Each number against its one range, before it becomes an int or a float.
+  const auto read = [&r](const char* key, const SettingRange& range, double fallback) {
+    const double value = r.number(key, fallback);
+    if (const std::string bad = range.check(value); !bad.empty()) r.failAt(key, bad);
+    return value;
+  };
+  f.directions = static_cast<int>(read("directions", friction_range::directions, f.directions));
+  f.mu0 = read("mu0", friction_range::mu0, f.mu0);
+  f.mu_max = static_cast<float>(read("mu_max", friction_range::mu_max, f.mu_max));
+  f.patch_width = read("patch_width", friction_range::patch_width, f.patch_width);
+  f.patch_resolution = static_cast<int>(
+      read("patch_resolution", friction_range::patch_resolution, f.patch_resolution));
+  f.reuse_pixels = read("reuse_pixels", friction_range::reuse_pixels, f.reuse_pixels);
+  f.texel_reading = r.enumeration("texel_reading", f.texel_reading, kTexelReadingNames);
+}
+
 double radiansFromDegrees(double degrees) {
   return degrees * (kPi / 180.0);
 }
@@ -56,11 +81,8 @@ void parseSettings(JsonReader r, SceneDesc& scene) {
   // Keys named as the C++ fields; the old "friction" and "frame" are still read.
   s.limit_surface =
       r.enumeration(r.renamed("limit_surface", "friction"), s.limit_surface, kLimitSurfaceNames);
-  s.frame_mode = r.enumeration(r.renamed("frame_mode", "frame"), s.frame_mode, kFrameModeNames);
-  s.world_axis = r.direction("world_axis", s.world_axis);
-  s.fallback_axis = r.direction("fallback_axis", s.fallback_axis);
+  parseFrameSettings(r, s.frame);
   s.auto_frame_iterations = r.integer("auto_frame_iterations", s.auto_frame_iterations, 0, 1000);
-  s.auto_frame_speed = r.number("auto_frame_speed", s.auto_frame_speed, Range::nonNegative(kHuge));
   s.warm_starting = r.boolean("warm_starting", s.warm_starting);
   s.baumgarte = r.number("baumgarte", s.baumgarte, Range::closed(0.0, 1.0));
   s.linear_slop = r.number("linear_slop", s.linear_slop, Range::nonNegative(kHuge));
@@ -69,15 +91,7 @@ void parseSettings(JsonReader r, SceneDesc& scene) {
       r.number("max_correction_speed", s.max_correction_speed, Range::nonNegative(kHuge));
   s.max_speed = r.number("max_speed", s.max_speed, Range::nonNegative(kHuge));
   // SPEC 3: N, mu0, mu_max, w, R.
-  FrictionSettings& f = s.friction;
-  f.directions = r.integer("directions", f.directions, 4, 64);
-  f.mu0 = r.number("mu0", f.mu0, Range::closed(0.0, 100.0));
-  f.mu_max = static_cast<float>(
-      r.number("mu_max", static_cast<double>(f.mu_max), Range::leftOpen(0.0, 1000.0)));
-  f.patch_width = r.number("patch_width", f.patch_width, Range::positive(kHuge));
-  f.patch_resolution = r.integer("patch_resolution", f.patch_resolution, 1, 1024);
-  f.reuse_pixels = r.number("reuse_pixels", f.reuse_pixels, Range::nonNegative(kHuge));
-  f.texel_reading = r.enumeration("texel_reading", f.texel_reading, kTexelReadingNames);
+  parseFrictionSettings(r, s.friction);
   // Any friction provider, sampler or not; the old "sampler" is still read.
   const std::string provider = r.renamed("friction_provider", "sampler");
   scene.friction_provider = r.string(provider, scene.friction_provider);

@@ -19,9 +19,9 @@ WorldSettings rigSettings(const TribometerSettings& settings, const Vec3& slide)
   w.iterations = settings.iterations;
   w.gravity = Vec3(0.0, 0.0, -settings.gravity);
   w.limit_surface = LimitSurfaceKind::Box;
-  w.frame_mode = FrameMode::World;
-  w.world_axis = slide;
-  w.fallback_axis = Vec3::UnitZ().cross(slide);
+  w.frame.mode = FrameMode::World;
+  w.frame.world_axis = slide;
+  w.frame.fallback_axis = Vec3::UnitZ().cross(slide);
   w.friction = settings.friction;
   w.friction.directions = 4;
   w.threads = 1;

@@ -55,7 +55,7 @@ void World::step() {
   collide();
   p.ms(Stage::Collide) = clock.lap();
   // 3. Each contact's tangent frame (t, b) by the frame mode (SPEC 5).
-  computeContactFrames(settings_.frame_mode, frameInputs(), contacts_, &pool);
+  computeContactFrames(settings_.frame.mode, frameInputs(), contacts_, &pool);
   p.ms(Stage::Frames) = clock.lap();
   // 4. Per-direction friction coefficients of every contact started (SPEC 3, Eq. 7).
   computeFriction();

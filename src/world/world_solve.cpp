@@ -45,14 +45,14 @@ void World::collide() {
 FrameInputs World::frameInputs() {
   FrameInputs in;
   in.bodies = bodies_;
-  in.world_axis = settings_.world_axis;
-  in.fallback_axis = settings_.fallback_axis;
+  in.world_axis = settings_.frame.world_axis;
+  in.fallback_axis = settings_.frame.fallback_axis;
   if (frame_callback_) in.callback = [this](const Contact& c) { return frame_callback_(*this, c); };
   // Frame mode Auto predicts the sliding with the solver's frictionless iterations.
   in.predict_velocities = [this](std::span<const Contact> contacts) {
     return predictFrictionless(*solver_, solveInputs(), contacts, settings_.auto_frame_iterations);
   };
-  in.sliding_speed = settings_.auto_frame_speed;
+  in.sliding_speed = settings_.frame.sliding_speed;
   return in;
 }
 

@@ -175,6 +175,21 @@ TEST(RunCommand, BadValuesAreOneLineErrors) {
   expectOneLineError(runCli({"run"}), "SCENE");
 }
 
+// A friction setting out of range, as an option and in a scene: the words every front end
+// shares (tests/sampler/friction_settings_test.cpp).
+TEST(RunCommand, AFrictionSettingOutOfRangeGetsTheSharedWords) {
+  const std::string words = "patch_resolution must be an integer in [1, 256], got 512";
+  const std::string scene = example("minimal.json");
+  expectOneLineError(runCli({"run", scene, "--patch-res", "512"}), words);
+  expectOneLineError(runCli({"tribometer", "gen:concrete:1", "--patch-res", "512"}), words);
+  nlohmann::json j = nlohmann::json::parse(slurpBinary(example("settings.json")));
+  j["settings"]["patch_resolution"] = 512;
+  const std::string path = test::tempDir("run_range") + "/settings.json";
+  std::ofstream(path) << j.dump(2);
+  expectOneLineError(runCli({"run", path}),
+                     "/settings/patch_resolution: must be an integer in [1, 256], got 512");
+}
+
 TEST(RunCommand, ExplosionsAndDeepNestingAreOneLineErrors) {
   const std::string dir = test::tempDir("run_extreme");
   // A body launched above the speed limit stops the run at step 1, named.

@@ -19,6 +19,7 @@ asperity_friction* groundAndCube(const char* normal_map) {
   asperity_friction_settings settings;
   asperity_friction_default_settings(&settings);
   settings.directions = 8;
+  settings.provider = "cpu";
   asperity_friction* h = nullptr;
   EXPECT_EQ(asperity_friction_create(&settings, &h), ASPERITY_OK);
   asperity_shape plane;
@@ -62,6 +63,7 @@ TEST(ContactFrictionC, GivesTheNumbersOfTheCppClass) {
 
   // The same set-up through the C++ class.
   ContactFrictionSettings settings;
+  settings.provider = "cpu";
   settings.friction.directions = 8;
   ContactFriction friction(settings);
   ObjectDesc ground{"ground", groundPlaneDesc().shapes, Vec3::Zero()};

@@ -68,6 +68,7 @@ TEST(ContactFriction, GivesAnEnginesContactsWhatAWorldStepGivesItsOwn) {
   ASSERT_GE(world->contacts().size(), 4u);
 
   ContactFrictionSettings settings;
+  settings.provider = "cpu";
   settings.friction = world->settings().friction;
   ContactFriction friction(settings);
   for (size_t i = 0; i < world->bodies().size(); ++i) {
@@ -113,6 +114,7 @@ TEST(ContactFriction, SameBitsOnOneAndFourThreads) {
   std::vector<std::vector<float>> runs;
   for (const int threads : {1, 4}) {
     ContactFrictionSettings settings;
+    settings.provider = "cpu";
     settings.threads = threads;
     settings.friction.directions = 8;
     ContactFriction friction(settings);

@@ -25,7 +25,7 @@ TEST(EngineSurfaces, ReadsSettingsAndResolvedSurfacesByName) {
   EXPECT_EQ(s.settings.friction.mu0, 0.0);  // the engine's own coefficient is mu0
   EXPECT_EQ(s.settings.friction.patch_width, 0.03);
   EXPECT_EQ(s.settings.provider, "cone");
-  EXPECT_EQ(s.settings.frame_mode, FrameMode::Auto);
+  EXPECT_EQ(s.settings.frame.mode, FrameMode::Auto);
   EXPECT_EQ(s.settings.threads, 2);
   ASSERT_EQ(s.surfaces.size(), 2u);
   const Surface* floor = s.find("floor");

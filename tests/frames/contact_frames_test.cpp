@@ -41,8 +41,8 @@ Scene restingCube(FrameMode mode, const Vec3& world_axis = Vec3::UnitX(),
                   const Vec3& cube_axis = Vec3::Zero(), double yaw = 0.0,
                   double plane_texture_rotation = 0.0) {
   WorldSettings s;
-  s.frame_mode = mode;
-  s.world_axis = world_axis;
+  s.frame.mode = mode;
+  s.frame.world_axis = world_axis;
   Scene scene{std::make_unique<World>(s), kNoBody};
   BodyDesc ground = groundPlaneDesc();
   ground.shapes[0].surface.texture_rotation = plane_texture_rotation;
@@ -91,7 +91,7 @@ TEST(ContactFrames, TextureModeFollowsTheTextureOfB) {
 TEST(ContactFrames, AutoModeAlignsTWithTheSlidingVelocity) {
   // A cube sliding along (1, 2, 0): t along its sliding direction at every contact.
   WorldSettings s;
-  s.frame_mode = FrameMode::Auto;
+  s.frame.mode = FrameMode::Auto;
   World world(s);
   world.createBody(groundPlaneDesc());
   BodyDesc d = boxDesc("cube", Vec3::Constant(0.1), {Vec3(0, 0, 0.099), Quat::Identity()});

@@ -117,7 +117,8 @@ std::unique_ptr<World> slidingBox(bool textured_floor, double speed) {
        {{{"name", "box"},
          {"position", {0, 0, 0.1}},
          {"linear_velocity", {speed, 0, 0}},
-         {"shapes", {{{"type", "box"}, {"half_extents", {0.1, 0.1, 0.1}}, {"surface", "concrete"}}}}},
+         {"shapes",
+          {{{"type", "box"}, {"half_extents", {0.1, 0.1, 0.1}}, {"surface", "concrete"}}}}},
         {{"name", "floor"},
          {"type", "static"},
          {"shapes", {{{"type", "plane"}, {"surface", floor}}}}}}}};
@@ -176,8 +177,8 @@ TEST(PatchReuse, BadToleranceIsNamed) {
   FrictionSettings s;
   s.reuse_pixels = -1.0;
   EXPECT_NE(test::errorOf([&] {
-              validatePatchSettings(s, "cpu sampler");
-            }).find("cpu sampler: reuse_pixels must be finite and >= 0"),
+              validate(s, "cpu sampler");
+            }).find("cpu sampler: reuse_pixels must be a finite number >= 0, got -1"),
             std::string::npos);
 }
 

@@ -96,7 +96,7 @@ TEST(BodyParse, GeneratedAndFileSurfaces) {
   EXPECT_EQ(ground.source.mask_file, "textures/half_mask.png");
   EXPECT_EQ(ground.source.green, GreenConvention::OpenGL);
   EXPECT_EQ(png.bodies[1].shapes[0].surface.source.green, GreenConvention::DirectX);
-  EXPECT_EQ(png.settings.frame_mode, FrameMode::Texture);
+  EXPECT_EQ(png.settings.frame.mode, FrameMode::Texture);
 }
 
 TEST(BodyParse, MeshesKeepTheirSource) {

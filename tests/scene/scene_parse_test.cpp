@@ -55,7 +55,7 @@ TEST(SceneParse, MinimalSceneTakesDefaults) {
 TEST(SceneParse, SettingsAreRead) {
   const SceneDesc scene = loadScene(test::sourcePath("scenes/examples/settings.json"));
   EXPECT_EQ(scene.settings.limit_surface, LimitSurfaceKind::Polygon);
-  EXPECT_EQ(scene.settings.frame_mode, FrameMode::World);
+  EXPECT_EQ(scene.settings.frame.mode, FrameMode::World);
   EXPECT_EQ(scene.settings.friction.directions, 8);
   EXPECT_EQ(scene.settings.friction.mu0, 0.2);
   EXPECT_EQ(scene.settings.friction.mu_max, 4.0f);
@@ -124,11 +124,11 @@ TEST(SceneParse, SettingsRanges) {
   EXPECT_EQ(loadError(R"({"settings": {"directions": 3}})"),
             "FILE: /settings/directions: must be an integer in [4, 64], got 3");
   EXPECT_EQ(loadError(R"({"settings": {"patch_width": 0}})"),
-            "FILE: /settings/patch_width: must be a positive number, got 0");
+            "FILE: /settings/patch_width: must be a number in [1e-06, 100], got 0");
   EXPECT_EQ(loadError(R"({"settings": {"gravity": [0, 0, 1e300]}})"),
             "FILE: /settings/gravity/2: must be a number in [-1000000, 1000000], got 1e+300");
   EXPECT_EQ(loadError(R"({"settings": {"mu0": "0.2"}})"),
-            "FILE: /settings/mu0: must be a number in [0, 100], got string \"0.2\"");
+            "FILE: /settings/mu0: must be a finite number, got string \"0.2\"");
   EXPECT_EQ(loadError(R"({"settings": {"friction_provider": ""}})"),
             "FILE: /settings/friction_provider: must be a friction provider name, got \"\"");
   EXPECT_EQ(loadError(R"({"settings": {"sampler": ""}})"),
@@ -163,7 +163,7 @@ TEST(SceneParse, DeprecatedKeysAreReadWithAWarning) {
           "loads": [{"body": "box", "point": [0.1, 0, 0]}]})");
   const SceneDesc scene = loadScene(path);
   EXPECT_EQ(scene.settings.limit_surface, LimitSurfaceKind::Polygon);
-  EXPECT_EQ(scene.settings.frame_mode, FrameMode::Auto);
+  EXPECT_EQ(scene.settings.frame.mode, FrameMode::Auto);
   EXPECT_EQ(scene.friction_provider, "cpu");
   ASSERT_EQ(scene.loads.size(), 1u);
   EXPECT_EQ(scene.loads[0].desc.local_point, Vec3(0.1, 0.0, 0.0));

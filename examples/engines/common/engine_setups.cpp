@@ -122,8 +122,8 @@ nlohmann::json surfacesFile(const SceneDesc& scene) {
       {"patch_resolution", w.friction.patch_resolution},
       {"reuse_pixels", w.friction.reuse_pixels},
       {"friction_provider", scene.friction_provider},
-      {"frame_mode", nameOf(w.frame_mode, kFrameModeNames)},
-      {"world_axis", {w.world_axis.x(), w.world_axis.y(), w.world_axis.z()}}};
+      {"frame_mode", nameOf(w.frame.mode, kFrameModeNames)},
+      {"world_axis", {w.frame.world_axis.x(), w.frame.world_axis.y(), w.frame.world_axis.z()}}};
   const nlohmann::json written = sceneToJson(scene);
   nlohmann::json surfaces = nlohmann::json::object();
   for (size_t i = 0; i < scene.bodies.size(); ++i) {

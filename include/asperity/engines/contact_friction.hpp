@@ -34,13 +34,11 @@ using ObjectId = uint32_t;
 inline constexpr ObjectId kNoObject = 0xffffffffu;
 
 struct ContactFrictionSettings {
-  FrictionSettings friction;                // N, mu0, mu_max, patch width w and size R, reuse
-  std::string provider = "cpu";             // a name of `providers` (cpu, cone, constant, gl)
-  FrameMode frame_mode = FrameMode::World;  // SPEC 5; Auto uses the objects' velocities
-  Vec3 world_axis = Vec3::UnitX();
-  Vec3 fallback_axis = Vec3::UnitY();
-  double sliding_speed = 1e-3;  // m/s: frame mode Auto and the sense choice below it
-  int threads = 1;              // 0 = every core, 1 = the calling thread (as WorldSettings)
+  FrictionSettings friction;  // N, mu0, mu_max, patch width w and size R, reuse
+  // A name of `providers` (cpu, cone, constant, gl); the default is a World's and a scene's.
+  std::string provider = kDefaultFrictionProvider;
+  FrameSettings frame;  // SPEC 5; Auto uses the objects' velocities
+  int threads = 1;      // 0 = every core, 1 = the calling thread (as WorldSettings)
 };
 
 // One engine object, registered once: its surfaces mapped on its shapes, in its own frame

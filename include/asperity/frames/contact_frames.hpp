@@ -29,6 +29,17 @@ inline constexpr std::pair<const char*, FrameMode> kFrameModeNames[] = {
     {"auto", FrameMode::Auto},
     {"texture", FrameMode::Texture}};
 
+// How contact frames are chosen: one struct for a World (WorldSettings::frame) and an engine
+// adapter (ContactFrictionSettings::frame).
+struct FrameSettings {
+  FrameMode mode = FrameMode::World;
+  Vec3 world_axis = Vec3::UnitX();
+  Vec3 fallback_axis = Vec3::UnitY();
+  // m/s: in mode Auto, contacts sliding slower than this keep the world frame; an engine
+  // adapter also keeps a contact's last sliding sense below it.
+  double sliding_speed = 1e-3;
+};
+
 // Every body's velocities as a frictionless solve predicts them (frame mode Auto), indexed
 // by BodyId. They must stay valid while computeContactFrames runs.
 struct PredictedVelocities {

@@ -72,7 +72,7 @@ class CpuPatchSampler : public FrictionProvider {
   ~CpuPatchSampler() override;
 
   std::string name() const override { return "cpu"; }
-  // Throws asperity::Error for bad settings (validatePatchSettings), a contact naming a body
+  // Throws asperity::Error for bad settings (validate(FrictionSettings)), a contact naming a body
   // or shape that does not exist, or a surface with a bad texture_size.
   void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                            const FrictionSettings& settings) override;

@@ -12,6 +12,7 @@
 
 #include "asperity/collision/contact.hpp"
 #include "asperity/dynamics/body.hpp"
+#include "asperity/sampler/friction_settings.hpp"
 
 namespace asperity {
 
@@ -19,39 +20,7 @@ namespace asperity {
 // cones (sampler/cone_provider.hpp), anisotropic from the textures at almost no cost.
 inline constexpr const char* kDefaultFrictionProvider = "cone";
 
-// How a patch pixel reads the normal map and gain mask at its uv (docs/samplers.md).
-enum class TexelReading {
-  // The texel the pixel's centre falls in: each texel is one facet, as the paper builds its
-  // materials (one facet per 1 x 1 mm texel) and as the authors' code samples its maps.
-  Nearest,
-  // The four texels around the uv blended before Eq. 5. Eq. 5 is nonlinear in a facet's tilt,
-  // so a blend flattens facets and reads rough maps smoother than their own texels (concrete
-  // about 40 % low); kept to show that difference.
-  Bilinear,
-};
-inline constexpr std::pair<const char*, TexelReading> kTexelReadingNames[] = {
-    {"nearest", TexelReading::Nearest}, {"bilinear", TexelReading::Bilinear}};
-
-// What every provider needs to know (SPEC 3, Eq. 7).
-struct FrictionSettings {
-  int directions = 4;         // N
-  double mu0 = 0.2;           // nominal coefficient (unit: 1)
-  float mu_max = 4.0f;        // clamp of the ploughing term
-  double patch_width = 0.02;  // w (m)
-  int patch_resolution = 16;  // R (pixels per side)
-  // Patch coherence (cpu and gl samplers): a contact whose surfaces moved by less than this
-  // many patch pixels (w / R each) since its patch was sampled keeps that sample; a kept
-  // sample's mu differs from a fresh one by what a sub-pixel move changes (pixel centres that
-  // crossed a texel edge read the next facet): mostly below 0.005, a few hundredths at most on
-  // rough maps (docs/samplers.md). 0: sample every call.
-  // Samples are matched across calls by the contact's identity (bodies, shapes, key): after
-  // changing a body's shapes or surfaces, call forgetHistory() (World::forgetContactHistory).
-  double reuse_pixels = 0.1;
-  // How each patch pixel reads the textures (cpu and gl samplers).
-  TexelReading texel_reading = TexelReading::Nearest;
-};
-
-class ThreadPool;  // the world's worker threads (internal)
+class ThreadPool;   // the world's worker threads (internal)
 class StateReader;  // asperity/math/state_stream.hpp
 class StateWriter;
 

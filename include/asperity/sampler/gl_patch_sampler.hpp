@@ -38,7 +38,7 @@ class GlPatchSampler : public FrictionProvider {
   ~GlPatchSampler() override;
 
   std::string name() const override { return "gl"; }
-  // Throws asperity::Error for bad settings (validatePatchSettings, N a multiple of 4), bad
+  // Throws asperity::Error for bad settings (validate(FrictionSettings), N a multiple of 4), bad
   // contacts or surfaces, or a GL failure.
   void computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                            const FrictionSettings& settings) override;

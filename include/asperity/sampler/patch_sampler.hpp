@@ -1,6 +1,6 @@
 // What the patch samplers (CPU reference and OpenGL, SPEC 3) share in their public API: the
-// validation of FrictionSettings and the per-pixel images of one contact's patch (the paper's
-// Fig. 7), for tests, the `asperity patch` command and debugging.
+// per-pixel images of one contact's patch (the paper's Fig. 7), for tests, the `asperity
+// patch` command and debugging. Their settings are checked by validate(FrictionSettings).
 //
 // Pixel layout: R x R, index j * R + i, pixel (i, j) centred at (-w/2 + (i + 1/2) w/R) t +
 // (-w/2 + (j + 1/2) w/R) b from the contact point (row 0 at -b, as an OpenGL viewport).
@@ -15,17 +15,6 @@
 #include "asperity/sampler/friction_provider.hpp"
 
 namespace asperity {
-
-// Limits of the patch settings (docs/samplers.md). Outside them validatePatchSettings throws.
-inline constexpr double kMinPatchWidth = 1e-6;   // m: below, a patch is finer than float uv
-inline constexpr double kMaxPatchWidth = 100.0;  // m: above, no contact patch is meant
-inline constexpr int kMaxPatchResolution = 256;
-
-// Throws asperity::Error naming `who` and the parameter unless: patch_width finite in
-// [kMinPatchWidth, kMaxPatchWidth]; patch_resolution in [1, 256]; directions in [4, 64] (and a
-// multiple of 4 when `directions_multiple_of_4`); mu_max positive and finite; mu0 finite >= 0.
-void validatePatchSettings(const FrictionSettings& settings, const std::string& who,
-                           bool directions_multiple_of_4 = false);
 
 // One contact's patch, per surface (index 0 = A, 1 = B).
 struct PatchImages {

@@ -46,12 +46,9 @@ struct WorldSettings {
   int substeps = 1;
   Vec3 gravity = Vec3(0.0, 0.0, -9.81);  // m/s^2
   LimitSurfaceKind limit_surface = LimitSurfaceKind::Box;
-  FrameMode frame_mode = FrameMode::World;
-  Vec3 world_axis = Vec3::UnitX();
-  Vec3 fallback_axis = Vec3::UnitY();
+  FrameSettings frame;
   FrictionSettings friction;
-  int auto_frame_iterations = 5;   // frictionless PGS iterations of frame mode Auto
-  double auto_frame_speed = 1e-3;  // m/s; slower contacts keep the world frame
+  int auto_frame_iterations = 5;  // frictionless PGS iterations of frame mode Auto
   bool warm_starting = true;
   double baumgarte = 0.2;             // fraction of the position error removed per step (1)
   double linear_slop = 0.0;           // m of penetration left alone; 0 = automatic from body sizes

@@ -84,10 +84,7 @@ ContactFrictionSettings contactFrictionSettings(const SceneDesc& scene) {
   ContactFrictionSettings s;
   s.friction = w.friction;
   s.provider = scene.friction_provider;
-  s.frame_mode = w.frame_mode;
-  s.world_axis = w.world_axis;
-  s.fallback_axis = w.fallback_axis;
-  s.sliding_speed = w.auto_frame_speed;
+  s.frame = w.frame;
   s.threads = w.threads;
   return s;
 }
@@ -151,7 +148,7 @@ BulletScene::BulletScene(const SceneDesc& scene, const BulletSceneOptions& optio
   // Asperity's friction, or mu0 from Bullet's product of the two objects' frictions.
   if (options.asperity_friction) {
     ContactFrictionSettings settings = contactFrictionSettings(scene);
-    if (options.frame_mode) settings.frame_mode = *options.frame_mode;
+    if (options.frame_mode) settings.frame.mode = *options.frame_mode;
     m.friction = std::make_unique<BulletFriction>(m.world, settings);
   } else if (options.two_friction_directions) {
     m.world.getSolverInfo().m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;

@@ -4,6 +4,7 @@
 #include "asperity/engines/mujoco.hpp"
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 #include "asperity/error.hpp"
@@ -13,6 +14,14 @@
 namespace asperity {
 
 using mujoco_detail::GeomObjects;
+
+void mujoco_detail::checkMujocoVersion(int library, int header, const std::string& library_text) {
+  if (library / 10 != 22 || library != header) {
+    throw Error("MuJoCo adapter: written for MuJoCo 2.2 (built with headers " +
+                std::to_string(header) + "), but the library is " + library_text + " (" +
+                std::to_string(library) + ")");
+  }
+}
 
 struct MujocoFriction::Impl {
   const mjModel* model = nullptr;
@@ -27,6 +36,7 @@ struct MujocoFriction::Impl {
   MujocoFrictionStats stats;
 
   Impl(const mjModel* m, const EngineSurfaces& surfaces) : model(m), friction(surfaces.settings) {
+    mujoco_detail::checkMujocoVersion(mj_version(), mjVERSION_HEADER, mj_versionString());
     geoms = mujoco_detail::registerGeoms(m, surfaces, friction);
     state_stamp.assign(static_cast<size_t>(m->ngeom), -1);
   }

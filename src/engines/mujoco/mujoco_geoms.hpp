@@ -35,4 +35,9 @@ double contactDepth(const mjModel* m, const mjContact& c);
 // Where the geom is and how it moves (needs mj_kinematics, mj_comPos and mj_comVel).
 ObjectState geomState(const mjModel* m, const mjData* d, int geom);
 
+// The adapter repeats mj_fwdPosition's calls in MuJoCo 2.2's order (mujoco_friction.cpp): throws
+// asperity::Error naming both versions unless `library` (mj_version()) is a 2.2 release and the
+// one of the headers it was built with (mjVERSION_HEADER).
+void checkMujocoVersion(int library, int header, const std::string& library_text);
+
 }  // namespace asperity::mujoco_detail

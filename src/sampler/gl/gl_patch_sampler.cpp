@@ -460,7 +460,11 @@ void GlPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span
 
 void GlPatchSampler::startCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                                        const FrictionSettings& settings) {
-  validatePatchSettings(settings, "gl sampler", true);
+  validate(settings, "gl sampler");
+  if (settings.directions % 4 != 0) {
+    throw Error("gl sampler: directions must be a multiple of 4 (one RGBA target per 4), got " +
+                std::to_string(settings.directions));
+  }
   Impl& im = *impl_;
   if (im.context && !im.context->isCurrent()) im.context->makeCurrent();
   im.abandon();

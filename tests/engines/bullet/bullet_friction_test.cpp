@@ -41,7 +41,7 @@ struct FlatPair {
       : asperity(withSampler(scene, sampler), autoFrames()), plain(scene, withAsperity(false)) {}
   static SceneDesc withSampler(SceneDesc scene, const std::string& sampler) {
     scene.friction_provider = sampler;
-    scene.settings.auto_frame_speed = kBulletSlidingSpeed;
+    scene.settings.frame.sliding_speed = kBulletSlidingSpeed;
     return scene;
   }
 };

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "engines/engine_checks.hpp"
+#include "engines/mujoco/mujoco_geoms.hpp"
+#include "support/test_support.hpp"
 #include "mujoco/mjcf_scene.hpp"
 
 namespace asperity {
@@ -57,6 +59,14 @@ mjcf_scene::ModelPtr slabAndBox(const std::string& box_condim) {
       "<mujoco><worldbody><geom name='slab' type='box' size='1 1 0.05'/>"
       "<body pos='0 0 0.15'><freejoint/><geom name='box' type='box' size='0.1 0.1 0.1' condim='" +
       box_condim + "'/></body></worldbody></mujoco>");
+}
+
+TEST(MujocoFriction, ALibraryOtherThan22IsRefusedNamingBothVersions) {
+  EXPECT_NO_THROW(mujoco_detail::checkMujocoVersion(mj_version(), mjVERSION_HEADER, "this"));
+  EXPECT_EQ(test::errorOf([] { mujoco_detail::checkMujocoVersion(310, 222, "3.1.0"); }),
+            "MuJoCo adapter: written for MuJoCo 2.2 (built with headers 222), but the library is "
+            "3.1.0 (310)");
+  EXPECT_NE(test::errorOf([] { mujoco_detail::checkMujocoVersion(223, 222, "2.2.3"); }), "");
 }
 
 TEST(MujocoFriction, BadInputIsAnErrorNamingIt) {
