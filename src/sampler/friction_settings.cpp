@@ -1,39 +1,25 @@
 // The ranges of the friction settings and their one check (asperity/sampler/friction_settings.hpp).
 #include "asperity/sampler/friction_settings.hpp"
 
-#include <charconv>
 #include <cmath>
 
 #include "asperity/error.hpp"
+#include "math/number_text.hpp"
 
 namespace asperity {
 
-namespace {
-
-// Shortest text that reads back to the same double; whole numbers in full ("256", "1e-06").
-std::string numberText(double x) {
-  char buffer[64];
-  const bool whole = std::isfinite(x) && x == std::trunc(x) && std::abs(x) < 1e16;
-  const auto result =
-      whole ? std::to_chars(buffer, buffer + sizeof(buffer), x, std::chars_format::fixed)
-            : std::to_chars(buffer, buffer + sizeof(buffer), x);
-  return std::string(buffer, result.ptr);
-}
-
-}  // namespace
-
 std::string SettingRange::describe() const {
   if (hi >= 1e300)
-    return std::string("a finite number ") + (lo_open ? "> " : ">= ") + numberText(lo);
+    return std::string("a finite number ") + (lo_open ? "> " : ">= ") + formatNumber(lo);
   return std::string(integer ? "an integer in " : "a number in ") + (lo_open ? "(" : "[") +
-         numberText(lo) + ", " + numberText(hi) + "]";
+         formatNumber(lo) + ", " + formatNumber(hi) + "]";
 }
 
 std::string SettingRange::check(double value) const {
   const bool above_lo = lo_open ? value > lo : value >= lo;
   const bool ok =
       std::isfinite(value) && above_lo && value <= hi && (!integer || value == std::trunc(value));
-  return ok ? std::string() : "must be " + describe() + ", got " + numberText(value);
+  return ok ? std::string() : "must be " + describe() + ", got " + formatNumber(value);
 }
 
 std::optional<InvalidSetting> firstInvalidSetting(const FrictionSettings& s) {

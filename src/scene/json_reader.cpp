@@ -129,16 +129,6 @@ std::string Range::describe() const {
          (max_open ? ")" : "]");
 }
 
-std::string formatNumber(double x) {
-  // Whole numbers below 1e16 print in full ("1000000", not "1e+06"); the rest shortest.
-  char buffer[64];
-  const bool whole = std::isfinite(x) && x == std::trunc(x) && std::abs(x) < 1e16;
-  const auto result =
-      whole ? std::to_chars(buffer, buffer + sizeof(buffer), x, std::chars_format::fixed)
-            : std::to_chars(buffer, buffer + sizeof(buffer), x);
-  return std::string(buffer, result.ptr);
-}
-
 nlohmann::json parseJsonText(const std::string& text, const std::string& file) {
   try {
     DuplicateKeyCheck check(file);

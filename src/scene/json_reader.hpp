@@ -17,6 +17,7 @@
 
 #include "asperity/math/enum_names.hpp"
 #include "asperity/math/types.hpp"
+#include "math/number_text.hpp"
 
 namespace asperity::scene {
 
@@ -40,8 +41,8 @@ struct Range {
   std::string describe() const;
 };
 
-// Shortest text that reads back to the same double ("0.1", "-3", "1e+300").
-std::string formatNumber(double x);
+// Shortest text that reads back to the same double (math/number_text.hpp).
+using asperity::formatNumber;
 
 // Deepest nesting of arrays and objects that parseJsonText accepts (scenes need about 6).
 inline constexpr int kMaxJsonDepth = 64;
