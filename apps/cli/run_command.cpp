@@ -279,7 +279,7 @@ void registerRunCommand(CLI::App& app) {
 
   // How long.
   auto* steps = sub->add_option("--steps", opt->steps, "Number of steps")
-                    ->check(CLI::Range(int64_t{0}, int64_t{1000000000}));
+                    ->check(CLI::Range(int64_t{0}, kMaxSteps));
   auto* seconds = sub->add_option("--seconds", opt->seconds,
                                   "Simulated time (s); default 1 s when --steps is not given")
                       ->check(positiveNumber());
@@ -288,7 +288,7 @@ void registerRunCommand(CLI::App& app) {
   // Outputs.
   sub->add_option("--out", opt->out, "Trajectory CSV: step,time,body,x,y,z,qw,qx,qy,qz,v,w");
   sub->add_option("--every", opt->every, "Record every K-th step in the CSV")
-      ->check(CLI::Range(int64_t{1}, int64_t{1000000000}))
+      ->check(CLI::Range(int64_t{1}, kMaxSteps))
       ->capture_default_str();
   sub->add_option("--stats", opt->stats, "Per-step averages (contacts, stage times) as JSON");
   sub->add_flag("--hash", opt->hash, "Print the final state hash (16 hex digits)");

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "asperity/batch/batch.hpp"
+#include "asperity/world/run_loop.hpp"
 #include "bindings.hpp"
 
 namespace asperity::python {
@@ -196,6 +197,9 @@ void bindBatch(py::module_& m) {
       .def(
           "step",
           [](Batch& b, int64_t k) {
+            if (k > kMaxSteps)
+              throwValue("step: k must be in 0.." + std::to_string(kMaxSteps) + ", got " +
+                         std::to_string(k));
             py::gil_scoped_release release;
             b.step(k);
           },

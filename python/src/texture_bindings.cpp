@@ -73,10 +73,12 @@ py::array_t<float> generate(const std::string& name, int size, uint64_t seed,
   spec.name = name;
   spec.size = size;
   spec.seed = seed;
-  if (size < 1 || size > kMaxTextureSize) throwValue("size must be in 1..8192, got " + std::to_string(size));
+  if (size < 1 || size > kMaxTextureSize)
+    throwValue("size must be in 1..8192, got " + std::to_string(size));
   // Parameters as the CLI's text (numbers and paths alike).
   for (const auto& [key, value] : params) {
-    if (py::isinstance<py::bool_>(value)) throwType(key.cast<std::string>() + " must be a number or a path, got a bool");
+    if (py::isinstance<py::bool_>(value))
+      throwType(key.cast<std::string>() + " must be a number or a path, got a bool");
     spec.params[key.cast<std::string>()] = py::str(value).cast<std::string>();
   }
   NormalMap map;

@@ -61,7 +61,8 @@ TribometerSource makeSource(const py::handle& b, const py::handle& a, const py::
   TribometerSource source;
   source.plate = textureText(b), source.block = textureText(a);
   source.scene = textureText(scene);
-  if (!bodies.empty() && bodies.size() != 2) throwValue("bodies: expected two body names, got " + std::to_string(bodies.size()));
+  if (!bodies.empty() && bodies.size() != 2)
+    throwValue("bodies: expected two body names, got " + std::to_string(bodies.size()));
   if (bodies.size() == 2) source.block_body = bodies[0], source.plate_body = bodies[1];
   source.k_a = k_a, source.k_b = k_b, source.mu0 = mu0;
   source.texture_size = texture_size;

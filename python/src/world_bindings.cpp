@@ -222,7 +222,9 @@ void bindWorld(py::module_& m) {
       .def(
           "step",
           [](PyWorld& w, int64_t n) {
-            if (n < 0) throwValue("step: n must be >= 0, got " + std::to_string(n));
+            if (n < 0 || n > kMaxSteps)
+              throwValue("step: n must be in 0.." + std::to_string(kMaxSteps) + ", got " +
+                         std::to_string(n));
             // Other Python threads run while this world steps.
             py::gil_scoped_release release;
             runSteps(*w.world, n);

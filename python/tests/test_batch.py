@@ -203,6 +203,8 @@ def test_bad_input_raises_naming_it(pushed_scene):
         batch.reset(samples=[0, -1])
     with pytest.raises(ValueError, match="step count must be >= 0"):
         batch.step(-2)
+    with pytest.raises(ValueError, match="k must be in 0..1000000000, got 4611686018427387904"):
+        batch.step(2**62)
     with pytest.raises(ValueError, match="batch: n must be in 1..1000000, got 0"):
         asperity.Batch(pushed_scene, 0)
     with pytest.raises(TypeError):

@@ -66,6 +66,8 @@ def test_files_that_do_not_fit_raise(tmp_path):
         asperity.World(str(SCENES / "stacking.json"), state=cut)
     with pytest.raises(FileNotFoundError):
         asperity.World(str(SCENES / "stacking.json"), state=tmp_path / "missing.state")
+    with pytest.raises(ValueError, match="/dev/zero: not a regular file"):
+        world.load_state("/dev/zero")
     with pytest.raises(ValueError, match="write failed"):
         world.save_state("/dev/full")
     assert not pathlib.Path(str(path) + ".tmp").exists()

@@ -190,8 +190,10 @@ def test_bad_inputs_raise_with_the_cli_messages(minimal_scene, tmp_path):
         world.apply_force("box", [1, 0])
     with pytest.raises(ValueError, match="finite"):
         world.apply_impulse("box", [np.inf, 0, 0])
-    with pytest.raises(ValueError, match="n must be >= 0"):
+    with pytest.raises(ValueError, match="n must be in 0..1000000000, got -1"):
         world.step(-1)
+    with pytest.raises(ValueError, match="n must be in 0..1000000000, got 4611686018427387904"):
+        world.step(2**62)
     with pytest.raises(TypeError):
         world.step("ten")
 

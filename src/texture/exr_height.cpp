@@ -3,6 +3,7 @@
 #include "texture/exr_height.hpp"
 
 #include "asperity/error.hpp"
+#include "asperity/texture/png_io.hpp"
 
 #ifdef ASPERITY_HAVE_OPENEXR
 #include <ImfChannelList.h>
@@ -11,6 +12,8 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 
+#include <cmath>
+#include <cstdint>
 #include <exception>
 #include <string>
 #include <vector>
@@ -35,6 +38,28 @@ std::string heightChannel(const Imf::ChannelList& channels, const std::string& p
               "': no channel named height, Z, Y or R, and more than one channel");
 }
 
+// The data window's size, checked against the cap of PNG maps before anything is allocated (a
+// header alone may claim 40000 x 40000).
+void checkSize(const Imath::Box2i& window, const std::string& path) {
+  const int64_t w = int64_t{window.max.x} - window.min.x + 1;
+  const int64_t h = int64_t{window.max.y} - window.min.y + 1;
+  if (w < 1 || h < 1 || w > kMaxTextureSize || h > kMaxTextureSize) {
+    throw Error("OpenEXR file '" + path + "': data window " + std::to_string(w) + " x " +
+                std::to_string(h) + "; height maps are 1 to " + std::to_string(kMaxTextureSize) +
+                " texels a side");
+  }
+}
+
+// Heights must be numbers: one NaN or infinity would make every statistic of the map one too.
+void checkFinite(const HeightMap& map, const std::string& path) {
+  for (int j = 0; j < map.height; ++j)
+    for (int i = 0; i < map.width; ++i)
+      if (!std::isfinite(map.at(i, j)))
+        throw Error("OpenEXR file '" + path + "': the texel at column " + std::to_string(i) +
+                    ", row " + std::to_string(map.height - 1 - j) + " (from the top) is " +
+                    std::to_string(map.at(i, j)) + " once scaled; heights must be finite");
+}
+
 }  // namespace
 
 bool available() {
@@ -45,6 +70,7 @@ HeightMap load(const std::string& path, double scale) {
   try {
     Imf::InputFile file(path.c_str());
     const Imath::Box2i window = file.header().dataWindow();
+    checkSize(window, path);
     const int w = window.max.x - window.min.x + 1;
     const int h = window.max.y - window.min.y + 1;
     const std::string channel = heightChannel(file.header().channels(), path);
@@ -62,6 +88,7 @@ HeightMap load(const std::string& path, double scale) {
       for (int i = 0; i < w; ++i)
         map.at(i, h - 1 - r) =
             static_cast<float>(scale * pixels[static_cast<size_t>(r) * static_cast<size_t>(w) + i]);
+    checkFinite(map, path);
     return map;
   } catch (const Error&) {
     throw;

@@ -3,9 +3,8 @@
 #include "asperity/world/state_file.hpp"
 
 #include <cstring>
+#include <filesystem>
 #include <fstream>
-#include <iterator>
-#include <sstream>
 #include <string_view>
 
 #include "asperity/error.hpp"
@@ -36,23 +35,45 @@ std::string hex(uint64_t value) {
   return out;
 }
 
-std::string readFile(const std::string& path) {
+// The first `count` bytes of the file from `offset`; short when the file is.
+std::string readBytes(const std::string& path, uint64_t offset, uint64_t count) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw Error(path + ": cannot be read");
-  return text.str();
+  if (!in) throw Error("cannot be read");
+  in.seekg(static_cast<std::streamoff>(offset));
+  std::string bytes(static_cast<size_t>(count), '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(count));
+  if (in.bad()) throw Error("cannot be read");
+  bytes.resize(static_cast<size_t>(in.gcount()));
+  return bytes;
 }
 
-// The header checked field by field; returns the state's bytes.
-std::string_view checkHeader(StateReader& in, std::string_view file, const World& world,
-                             uint64_t scene_id) {
-  if (file.size() < sizeof(kMagic) || std::memcmp(file.data(), kMagic, sizeof(kMagic)) != 0)
+// A state file is a regular file: a device, a FIFO or /dev/zero would be read without end.
+uint64_t regularFileSize(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(status)) throw Error("cannot be read");
+  if (!std::filesystem::is_regular_file(status))
+    throw Error("not a regular file (a folder, a device or a FIFO), so no state file");
+  const uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw Error("cannot be read");
+  return size;
+}
+
+struct StateHeader {
+  uint64_t length = 0;  // bytes of state after the header
+  uint64_t sum = 0;     // their checksum
+};
+
+// The header (the file's first bytes) checked field by field against the file's size, before
+// any byte of the state is read.
+StateHeader checkHeader(std::string_view head, uint64_t file_size, const World& world,
+                        uint64_t scene_id) {
+  if (head.size() < sizeof(kMagic) || std::memcmp(head.data(), kMagic, sizeof(kMagic)) != 0)
     throw Error("not an Asperity state file (it does not start with ASPSTATE)");
-  if (file.size() < kHeaderSize)
-    throw Error("truncated: " + std::to_string(file.size()) + " bytes, shorter than the " +
+  if (file_size < kHeaderSize)
+    throw Error("truncated: " + std::to_string(file_size) + " bytes, shorter than the " +
                 std::to_string(kHeaderSize) + "-byte header");
+  StateReader in(head);
   char magic[sizeof(kMagic)];
   in.getBytes(magic, sizeof(magic));
   const auto format = in.get<uint32_t>();
@@ -66,15 +87,14 @@ std::string_view checkHeader(StateReader& in, std::string_view file, const World
     throw Error("saved from another scene (scene id " + hex(scene) + ", this scene's is " +
                 hex(scene_id) + ")");
   in.expect<uint64_t>(world.bodies().size(), "bodies");
-  const auto length = in.get<uint64_t>();
-  const auto sum = in.get<uint64_t>();
-  const size_t left = file.size() - in.offset();
-  if (length != left)
-    throw Error("truncated or padded: the header promises " + std::to_string(length) +
+  StateHeader header;
+  header.length = in.get<uint64_t>();
+  header.sum = in.get<uint64_t>();
+  const uint64_t left = file_size - kHeaderSize;
+  if (header.length != left)
+    throw Error("truncated or padded: the header promises " + std::to_string(header.length) +
                 " bytes of state, the file holds " + std::to_string(left));
-  const std::string_view state = file.substr(in.offset());
-  if (checksum(state) != sum) throw Error("corrupt: the state's checksum does not match");
-  return state;
+  return header;
 }
 
 }  // namespace
@@ -94,10 +114,14 @@ void saveStateFile(const World& world, const std::string& path, uint64_t scene_i
 }
 
 void loadStateFile(World& world, const std::string& path, uint64_t scene_id) {
-  const std::string file = readFile(path);
   try {
-    StateReader header(file);
-    world.loadState(checkHeader(header, file, world, scene_id));
+    // Size and header first, so that only a file its header describes is read whole.
+    const uint64_t size = regularFileSize(path);
+    const StateHeader header = checkHeader(readBytes(path, 0, kHeaderSize), size, world, scene_id);
+    const std::string state = readBytes(path, kHeaderSize, header.length);
+    if (state.size() != header.length) throw Error("cannot be read: it changed while being read");
+    if (checksum(state) != header.sum) throw Error("corrupt: the state's checksum does not match");
+    world.loadState(state);
   } catch (const Error& e) {
     throw Error(path + ": " + e.what());
   }

@@ -3,8 +3,10 @@
 // set (`make test`), which then fails.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 
 #include "asperity/texture/height_map.hpp"
 #include "support/test_support.hpp"
@@ -55,6 +57,32 @@ TEST(ExrHeight, BrokenFilesAreRefusedByName) {
   std::ofstream(dir + "/junk.exr") << "not an exr file";
   test::expectErrorContaining([&] { loadHeightMap(dir + "/junk.exr"); }, {"junk.exr"});
   test::expectErrorContaining([&] { loadHeightMap(dir + "/none.exr"); }, {"none.exr"});
+}
+
+// The cap of PNG maps, checked from the header before the pixels are allocated.
+TEST(ExrHeight, AMapWiderThan8192TexelsIsRefusedFromItsHeader) {
+  if (!haveOpenExr()) GTEST_SKIP() << "built without OpenEXR";
+  const std::string path = test::tempDir("exr") + "/wide.exr";
+  exr::save(HeightMap(8193, 1), path);
+  test::expectErrorContaining([&] { loadHeightMap(path); },
+                              {"wide.exr", "data window 8193 x 1", "1 to 8192 texels a side"});
+}
+
+TEST(ExrHeight, ANonFiniteTexelIsRefusedNamingIt) {
+  if (!haveOpenExr()) GTEST_SKIP() << "built without OpenEXR";
+  const std::string dir = test::tempDir("exr");
+  for (const float bad : {std::nanf(""), std::numeric_limits<float>::infinity()}) {
+    HeightMap map = ramp(4, 5);
+    map.at(1, 4 - 2) = bad;  // row 2 from the top
+    exr::save(map, dir + "/bad.exr");
+    test::expectErrorContaining([&] { loadHeightMap(dir + "/bad.exr"); },
+                                {"bad.exr", "column 1, row 2", "heights must be finite"});
+  }
+  // Finite heights that a scale takes past a float are refused too.
+  HeightMap big = ramp(4, 4);
+  big.at(0, 0) = 1e30f;
+  exr::save(big, dir + "/big.exr");
+  test::expectErrorContaining([&] { loadHeightMap(dir + "/big.exr", 1e20); }, {"must be finite"});
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // on, for the paper's scenes, several split points and the cpu and constant samplers; and every
 // file that does not fit is refused with a message naming it.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -193,6 +194,23 @@ TEST_F(CheckpointFile, OtherFilesAreNotStates) {
   EXPECT_NE(loadError(dir_ + "/missing.state").find("cannot be read"), std::string::npos);
 }
 
+// A device, a FIFO or a folder is refused by what it is, before a byte is read: /dev/zero
+// would be read without end and a FIFO with no writer would block.
+TEST_F(CheckpointFile, DevicesFifosAndFoldersAreRefusedUnread) {
+  const std::string fifo = dir_ + "/pipe.state";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  for (const std::string& path : {std::string("/dev/zero"), fifo, dir_}) {
+    const std::string error = loadError(path);
+    EXPECT_EQ(error.rfind(path + ": not a regular file", 0), 0u) << error;
+  }
+}
+
+// A file longer than its header says is refused from the header, before its body is read.
+TEST_F(CheckpointFile, AFileLongerThanItsHeaderSaysIsRefusedByItsHeader) {
+  const std::string padded = variant("padded.state", bytes_ + std::string(4096, '\0'));
+  EXPECT_NE(loadError(padded).find("truncated or padded"), std::string::npos);
+}
+
 TEST_F(CheckpointFile, AnUnwritablePathIsAnErrorAndLeavesTheOldFile) {
   const SceneDesc desc = sceneOf("stacking", "cpu", 1);
   auto world = instantiate(desc);
@@ -200,15 +218,13 @@ TEST_F(CheckpointFile, AnUnwritablePathIsAnErrorAndLeavesTheOldFile) {
     saveStateFile(*world, "/dev/full", sceneStateId(desc));
     ADD_FAILURE() << "no error";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("/dev/full: write failed"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("/dev/full: write failed"), std::string::npos) << e.what();
   }
   try {
     saveStateFile(*world, dir_ + "/no/such/dir/x.state", sceneStateId(desc));
     ADD_FAILURE() << "no error";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("cannot open for writing"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("cannot open for writing"), std::string::npos) << e.what();
   }
   EXPECT_EQ(readBytes(path_), bytes_);
 }

@@ -45,7 +45,8 @@ HeightMap loadHeightMapPng(const std::string& path, double height_scale = 0.0,
 
 // A height map by its file name: `.exr` (any case) is a 32-bit float OpenEXR file whose values
 // are multiplied by height_scale (<= 0: 1, the values are metres; the channel named height, Z,
-// Y or R, or the only one), anything else a PNG as loadHeightMapPng. Builds without Debian's
+// Y or R, or the only one; at most 8192 texels a side, checked from the header, and every
+// scaled height finite), anything else a PNG as loadHeightMapPng. Builds without Debian's
 // libopenexr-dev refuse EXR files with an error saying so.
 HeightMap loadHeightMap(const std::string& path, double height_scale = 0.0,
                         HeightMapInfo* info = nullptr);

@@ -10,6 +10,9 @@
 
 namespace asperity {
 
+// Most steps one call runs (the CLI's --steps, Python's World.step and Batch.step).
+inline constexpr int64_t kMaxSteps = 1'000'000'000;
+
 // Steps that cover `seconds` at `dt`: ceil(seconds / dt), a hair under a whole step counting as
 // whole. Throws asperity::Error (naming `what`, e.g. "--seconds") for a negative or
 // non-finite time or more than 1e9 steps.
