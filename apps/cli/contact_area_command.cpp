@@ -3,8 +3,8 @@
 // of which texels touch.
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 #include <nlohmann/json.hpp>
@@ -38,8 +38,7 @@ struct ContactAreaOptions {
 ContactMaterial pairFrom(const ContactAreaOptions& opt, double& shear) {
   const bool modulus_given = !std::isnan(opt.modulus);
   const bool hardness_given = !std::isnan(opt.hardness);
-  ContactMaterial material{modulus_given ? opt.modulus : 0.0,
-                           hardness_given ? opt.hardness : 0.0};
+  ContactMaterial material{modulus_given ? opt.modulus : 0.0, hardness_given ? opt.hardness : 0.0};
   shear = 0.0;
   if (!opt.material_b.empty() || !opt.material_a.empty()) {
     const std::string b_name = opt.material_b.empty() ? opt.material_a : opt.material_b;
@@ -73,6 +72,16 @@ nlohmann::ordered_json toJson(const ContactArea& r, double shear) {
   return j;
 }
 
+// An answer that is not a number is an error, never a line of nulls.
+void checkFinite(const ContactArea& r) {
+  const double values[] = {r.real_area, r.apparent_area, r.fraction, r.mean_pressure, r.separation};
+  for (const double v : values)
+    if (!std::isfinite(v))
+      throw Error("contact-area: the load " + std::to_string(r.load) +
+                  " N gives a non-finite area, pressure or separation (check the maps' heights, "
+                  "--texture-size and the materials)");
+}
+
 void runContactArea(const ContactAreaOptions& opt) {
   if (!(opt.texture_size > 0.0)) throw Error("contact-area: --texture-size must be positive");
   const HeightMap b = loadHeightMap(opt.b_file, opt.height_scale);
@@ -83,7 +92,10 @@ void runContactArea(const ContactAreaOptions& opt) {
   double shear = 0.0;
   const ContactMaterial material = pairFrom(opt, shear);
   std::vector<ContactArea> results;
-  for (double load : opt.loads) results.push_back(solveContact(set, material, load));
+  for (double load : opt.loads) {
+    results.push_back(solveContact(set, material, load));
+    checkFinite(results.back());
+  }
   if (!opt.map.empty()) saveContactMapPng(set, results, opt.map);
   if (opt.json) {
     // One load: one object; several: an array in the order given.
@@ -93,10 +105,11 @@ void runContactArea(const ContactAreaOptions& opt) {
     return;
   }
   for (const ContactArea& r : results)
-    std::printf("load %.6g N: real area %.6g m2 of %.6g m2 (%.4g %%), mean pressure %.6g Pa, "
-                "plasticity index %.4g, %d of %d summits touching\n",
-                r.load, r.real_area, r.apparent_area, 100.0 * r.fraction, r.mean_pressure,
-                r.plasticity_index, r.summits_in_contact, r.summits);
+    std::printf(
+        "load %.6g N: real area %.6g m2 of %.6g m2 (%.4g %%), mean pressure %.6g Pa, "
+        "plasticity index %.4g, %d of %d summits touching\n",
+        r.load, r.real_area, r.apparent_area, 100.0 * r.fraction, r.mean_pressure,
+        r.plasticity_index, r.summits_in_contact, r.summits);
   if (shear > 0.0)
     for (const ContactArea& r : results)
       std::printf("load %.6g N: adhesion mu = tau A_r / W = %.4g\n", r.load,
@@ -113,11 +126,16 @@ void registerContactAreaCommand(CLI::App& app) {
       "(Greenwood-Williamson summits, elastic-plastic): contact-area B.png [--a A.png] "
       "--texture-size M --load N --modulus PA [--hardness PA] [--material-b NAME] [--json] "
       "[--map out.png]");
-  sub->add_option("b", opt->b_file, "Height map of surface B (grey PNG, 8 or 16 bit, or float OpenEXR)")->required();
+  sub->add_option("b", opt->b_file,
+                  "Height map of surface B (grey PNG, 8 or 16 bit, or float OpenEXR)")
+      ->required();
   sub->add_option("--a", opt->a_file, "Height map of surface A (default: a smooth plane)");
   sub->add_option("--height-scale", opt->height_scale,
-                  "Metres per full grey range (default: the scale stored in each file)");
+                  "Metres per full grey range (default: the scale stored in each file)")
+      ->check(positiveNumber());
+  // From a micrometre to a kilometre: past either, the patch's numbers leave a double's range.
   sub->add_option("--texture-size", opt->texture_size, "Side of the square patch (m)")
+      ->check(numberInRange(1e-6, 1e3))
       ->required();
   sub->add_option("--load", opt->loads, "Normal load (N); repeat for several loads")->required();
   sub->add_option("--modulus", opt->modulus,

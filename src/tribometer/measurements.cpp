@@ -1,6 +1,7 @@
 // Measurements of a material pair for calibration (calibrate.hpp): CSV of angle_deg,mu, of tilt
 // angles, or of slides of a launched block, each row turned into a coefficient.
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -53,9 +54,13 @@ double number(const std::string& cell, const char* name, const std::string& wher
   return x;
 }
 
+// The largest coefficient a row may give: the scenes' mu0 bound. A fit to rows far past it
+// (1e300, a typo or a forged file) would give gains of 0 and a residual of infinity.
+constexpr double kMaxMeasuredMu = 100.0;
+
 // One data row's coefficient by kind, its values checked.
-double rowMu(MeasurementKind kind, const std::vector<std::string>& c, double gravity,
-             const std::string& where) {
+double measuredMu(MeasurementKind kind, const std::vector<std::string>& c, double gravity,
+                  const std::string& where) {
   if (kind == MeasurementKind::Mu) {
     const double mu = number(c[1], "mu", where);
     if (mu < 0.0) throw Error(where + ": mu must be >= 0, got " + c[1]);
@@ -72,6 +77,18 @@ double rowMu(MeasurementKind kind, const std::vector<std::string>& c, double gra
   if (!(speed > 0.0)) throw Error(where + ": speed must be > 0, got " + c[1]);
   if (!(distance > 0.0)) throw Error(where + ": distance must be > 0, got " + c[2]);
   return speed * speed / (2.0 * gravity * distance);
+}
+
+double rowMu(MeasurementKind kind, const std::vector<std::string>& c, double gravity,
+             const std::string& where) {
+  const double mu = measuredMu(kind, c, gravity, where);
+  if (!(mu <= kMaxMeasuredMu)) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%g", mu);
+    throw Error(where + ": the row gives mu = " + text + ", more than " +
+                std::to_string(static_cast<int>(kMaxMeasuredMu)) + " (no measured pair grips so)");
+  }
+  return mu;
 }
 
 }  // namespace

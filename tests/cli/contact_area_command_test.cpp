@@ -37,12 +37,11 @@ TEST(ContactAreaCommand, JsonMatchesTheLibrary) {
                            "--modulus", "3e9", "--hardness", "2e8", "--json"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
-    for (const char* key : {"load", "real_area", "apparent_area", "fraction", "mean_pressure",
-                            "plasticity_index"})
+    for (const char* key :
+         {"load", "real_area", "apparent_area", "fraction", "mean_pressure", "plasticity_index"})
       EXPECT_TRUE(j.contains(key)) << key;
     const HeightMap hb = loadHeightMapPng(b), ha = loadHeightMapPng(a);
-    const ContactArea lib =
-        solveContact(findSummits(hb, &ha, 0.032), {3e9, 2e8}, std::stod(load));
+    const ContactArea lib = solveContact(findSummits(hb, &ha, 0.032), {3e9, 2e8}, std::stod(load));
     EXPECT_DOUBLE_EQ(j["real_area"].get<double>(), lib.real_area);
     EXPECT_DOUBLE_EQ(j["apparent_area"].get<double>(), 0.032 * 0.032);
     EXPECT_DOUBLE_EQ(j["fraction"].get<double>(), lib.fraction);
@@ -54,8 +53,8 @@ TEST(ContactAreaCommand, JsonMatchesTheLibrary) {
 TEST(ContactAreaCommand, SeveralLoadsGiveAnArrayAndAMapPanelEach) {
   const std::string dir = test::tempDir("contact");
   const std::string b = heightsFile(dir, "plaster", 0.032);
-  const auto r = runCli({"contact-area", b, "--texture-size", "0.032", "--modulus", "3e9",
-                         "--load", "100", "--load", "1000", "--json", "--map", dir + "/map.png"});
+  const auto r = runCli({"contact-area", b, "--texture-size", "0.032", "--modulus", "3e9", "--load",
+                         "100", "--load", "1000", "--json", "--map", dir + "/map.png"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   ASSERT_EQ(j.size(), 2u);
@@ -91,17 +90,22 @@ TEST(ContactAreaCommand, BadInputIsOneLineAndNonZero) {
   const std::string dir = test::tempDir("contact");
   const std::string b = heightsFile(dir, "plaster", 0.032);
   const auto run = [&](std::vector<std::string> extra) {
-    std::vector<std::string> args = {"contact-area", b, "--texture-size", "0.032", "--load",
-                                     "10", "--modulus", "1e9"};
+    std::vector<std::string> args = {"contact-area", b,    "--texture-size", "0.032",
+                                     "--load",       "10", "--modulus",      "1e9"};
     for (std::string& e : extra) args.push_back(std::move(e));
     return runCli(args);
   };
-  expectOneLineError(runCli({"contact-area", dir + "/none.png", "--texture-size", "0.03",
-                             "--load", "1", "--modulus", "1e9"}),
+  expectOneLineError(runCli({"contact-area", dir + "/none.png", "--texture-size", "0.03", "--load",
+                             "1", "--modulus", "1e9"}),
                      "none.png");
   expectOneLineError(run({"--load", "-5"}), "load");
   expectOneLineError(run({"--modulus", "0"}), "modulus");
   expectOneLineError(run({"--hardness", "-1"}), "hardness");
+  // A patch past a kilometre (its areas leave a double's range) and a zero scale.
+  expectOneLineError(
+      runCli({"contact-area", b, "--texture-size", "1e300", "--load", "10", "--modulus", "1e9"}),
+      "--texture-size");
+  expectOneLineError(run({"--height-scale", "0"}), "--height-scale");
   // A normal map (RGB) is no height map.
   const auto normals = runCli({"texture", "plaster", "--size", "16", "--out", dir + "/n.png"});
   ASSERT_EQ(normals.exit_code, 0) << normals.err;

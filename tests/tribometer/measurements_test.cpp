@@ -53,6 +53,12 @@ TEST(Measurements, BadRowsAreErrorsNamingTheLine) {
             std::string::npos);
   EXPECT_NE(error("angle_deg,speed,distance\n0,-1,1\n").find("m.csv:2: speed"), std::string::npos);
   EXPECT_NE(error("angle_deg,mu\n").find("no measurements"), std::string::npos);
+  // Rows that would give friction without bound, as given or as their slide or tilt implies.
+  EXPECT_NE(error("angle_deg,mu\n0,0.3\n90,1e300\n").find("m.csv:3: the row gives mu = 1e+300"),
+            std::string::npos);
+  EXPECT_NE(error("angle_deg,speed,distance\n0,1e200,1\n").find("m.csv:2: the row gives mu"),
+            std::string::npos);
+  EXPECT_NE(error("angle_deg,tilt_deg\n0,89.999\n").find("more than 100"), std::string::npos);
   EXPECT_NE(errorOf([] { readMeasurements("missing.csv"); }).find("missing.csv"),
             std::string::npos);
 }
