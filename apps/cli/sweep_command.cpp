@@ -1,6 +1,7 @@
 // `asperity sweep SCENE --vary PATH=SPEC ...`: an ensemble of independent runs of one scene
 // with varied numbers, on a oneTBB pool, written as one CSV row per sample (src/sweep).
 
+#include <cstdio>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -65,7 +66,10 @@ void runSweep(const SweepOptions& opt) {
     // Each row reaches the file as soon as it and every lower one are done; the library's
     // messages name the file, this command's name its option too.
     try {
-      runSweepToFile(sweep, {opt.out, opt.threads, opt.resume});
+      const int64_t ran = runSweepToFile(sweep, {opt.out, opt.threads, opt.resume});
+      if (opt.resume && ran == 0)
+        std::fprintf(stderr, "sweep: %s already holds all %lld samples: nothing to do\n",
+                     opt.out.c_str(), static_cast<long long>(sweep.desc().samples));
     } catch (const SweepFileError& e) {
       throw Error("--out " + std::string(e.what()));
     }

@@ -1,12 +1,24 @@
 // A sweep written to its CSV file as it runs, and resumed from it (sweep.hpp, SweepFileOptions).
 // Rows go out with one write(2) each, straight to the kernel: a killed process leaves whole
 // rows only. The journal beside the file names the sweep, so that a resume with other
-// arguments is refused instead of mixing two sweeps in one table.
+// arguments is refused instead of mixing two sweeps in one table; it stays beside the finished
+// file, so a resume of that file is checked against it too. A lock beside the file lets one
+// process at a time write it.
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string_view>
 
 #include "asperity/error.hpp"
 #include "asperity/math/atomic_file.hpp"
@@ -71,6 +83,52 @@ std::string readText(const std::string& path) {
   return text.str();
 }
 
+// An exclusive flock on FILE.lock, held while the sweep writes FILE; the system drops it when
+// the process ends, however it ends. The lock file stays: removing it would let one process
+// lock a file that another has just replaced.
+class SweepLock {
+ public:
+  explicit SweepLock(const std::string& path) {
+    const std::string lock = path + ".lock";
+    fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0) failOn(path, "cannot open its lock " + lock + ": " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      char holder[32] = {};
+      const ssize_t n = ::pread(fd_, holder, sizeof(holder) - 1, 0);
+      ::close(fd_);
+      failOn(path, "another sweep is writing it (process " + std::string(n > 0 ? holder : "?") +
+                       " holds " + lock + ")");
+    }
+    const std::string pid = std::to_string(::getpid());
+    if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) < 0) {
+    }
+  }
+  ~SweepLock() { ::close(fd_); }
+  SweepLock(const SweepLock&) = delete;
+  SweepLock& operator=(const SweepLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+// Whether a kept row has the header's columns, each a finite number or a state hash (what a
+// sample writes).
+bool wellFormedRow(std::string_view row, size_t columns) {
+  size_t count = 0;
+  for (size_t start = 0; start <= row.size(); ++count) {
+    const size_t comma = std::min(row.find(',', start), row.size());
+    const std::string cell(row.substr(start, comma - start));
+    char* end = nullptr;
+    const double value = std::strtod(cell.c_str(), &end);
+    const bool number = !cell.empty() && end == cell.c_str() + cell.size() && std::isfinite(value);
+    // The state hash: 16 hex digits.
+    const bool hash = cell.size() == 16 && cell.find_first_not_of("0123456789abcdef") == cell.npos;
+    if (!number && !hash) return false;
+    start = comma + 1;
+  }
+  return count == columns;
+}
+
 // The first key whose value differs between two journals ("" when none).
 std::string firstDifference(const nlohmann::json& a, const nlohmann::json& b) {
   for (const auto& [key, value] : a.items())
@@ -84,12 +142,18 @@ size_t completeLength(const std::string& text, const std::string& header, const 
                       int64_t& rows) {
   if (text.compare(0, header.size(), header) != 0)
     failOn(path, "its header is not this sweep's columns: cannot resume");
+  const size_t columns = static_cast<size_t>(std::count(header.begin(), header.end(), ',')) + 1;
   size_t end = header.size();
   rows = 0;
   for (size_t newline; (newline = text.find('\n', end)) != std::string::npos; end = newline + 1) {
     const std::string prefix = std::to_string(rows) + ",";
+    const std::string line = "line " + std::to_string(rows + 2);
     if (text.compare(end, prefix.size(), prefix) != 0)
-      failOn(path, "row " + std::to_string(rows + 2) + " is not sample " + std::to_string(rows));
+      failOn(path, line + " is not sample " + std::to_string(rows) + ": cannot resume");
+    if (!wellFormedRow(std::string_view(text).substr(end, newline - end), columns))
+      failOn(path, line + " (sample " + std::to_string(rows) + ") is not " +
+                       std::to_string(columns) +
+                       " numbers, as the sweep writes: the file was changed, cannot resume");
     ++rows;
   }
   return end;
@@ -97,21 +161,20 @@ size_t completeLength(const std::string& text, const std::string& header, const 
 
 // Where a resumed sweep starts: the file cut after its last whole row. -1: already complete.
 int64_t resumePoint(const Sweep& sweep, const std::string& path, const std::string& journal) {
-  const std::string text = readText(path);
-  int64_t rows = 0;
-  // Empty: killed after the journal, before the header (one write, so whole or absent).
-  const size_t length = text.empty() ? 0 : completeLength(text, sweep.csvHeader(), path, rows);
-  if (!std::filesystem::exists(journal)) {
-    if (rows == sweep.desc().samples && length == text.size()) return -1;
-    failOn(path, "nothing to resume: its journal " + journal + " is missing");
-  }
+  if (!std::filesystem::exists(journal))
+    failOn(path, "its journal " + journal + " is missing: nothing tells which sweep wrote it");
   const nlohmann::json written = nlohmann::json::parse(readText(journal), nullptr, false);
   if (written.is_discarded()) failOn(journal, "not a sweep journal (not valid JSON)");
   const std::string differs = firstDifference(journalOf(sweep), written);
   if (!differs.empty())
     failOn(journal, "written by another sweep (its " + differs +
                         " differs): run it again with the same arguments, or without resuming");
+  const std::string text = readText(path);
+  int64_t rows = 0;
+  // Empty: killed after the journal, before the header (one write, so whole or absent).
+  const size_t length = text.empty() ? 0 : completeLength(text, sweep.csvHeader(), path, rows);
   if (rows > sweep.desc().samples) failOn(path, "holds more rows than the sweep has samples");
+  if (rows == sweep.desc().samples && length == text.size()) return -1;  // complete
   std::error_code error;
   std::filesystem::resize_file(path, length, error);
   if (error) failOn(path, "cannot be cut after its last whole row: " + error.message());
@@ -131,6 +194,11 @@ std::string sweepJournal(const Sweep& sweep) {
 int64_t runSweepToFile(const Sweep& sweep, const SweepFileOptions& options) {
   const std::string& path = options.path;
   const std::string journal = sweepJournalPath(path);
+  // A regular file (or a new one) is locked; a device such as /dev/stdout is not.
+  std::error_code kind_error;
+  std::unique_ptr<SweepLock> lock;
+  if (!std::filesystem::exists(path, kind_error) || std::filesystem::is_regular_file(path))
+    lock = std::make_unique<SweepLock>(path);
   int64_t first = 0;
   if (options.resume) {
     if (!std::filesystem::exists(path)) failOn(path, "nothing to resume: the file does not exist");
@@ -150,8 +218,6 @@ int64_t runSweepToFile(const Sweep& sweep, const SweepFileOptions& options) {
     sweepFileCall([&] { out->append(sweep.csvRow(r)); });
   });
   sweepFileCall([&] { out->sync(); });
-  std::error_code ignored;  // a journal left behind only allows a (no-op) resume
-  if (journaled) std::filesystem::remove(journal, ignored);
   return sweep.desc().samples - first;
 }
 

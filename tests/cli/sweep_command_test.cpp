@@ -130,8 +130,8 @@ TEST(SweepCommand, KilledAtRandomMomentsTheFileIsValidAndResumes) {
     std::filesystem::remove(out + ".sweep");
     const long delay = delay_ms(random);
     SCOPED_TRACE("killed " + std::to_string(delay) + " ms after the header, " + threads);
-    test::killWhen(args(out, threads), [&] { return lineCount(out) >= 1; },
-                   std::chrono::milliseconds(delay));
+    test::killWhen(
+        args(out, threads), [&] { return lineCount(out) >= 1; }, std::chrono::milliseconds(delay));
     const std::string left = slurpBinary(out);
     ASSERT_FALSE(left.empty());
     EXPECT_EQ(left.back(), '\n');
@@ -145,6 +145,27 @@ TEST(SweepCommand, KilledAtRandomMomentsTheFileIsValidAndResumes) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(slurpBinary(out), whole);
   }
+}
+
+// A finished file keeps its journal: resumed with the same arguments there is nothing to do,
+// with another seed the resume is refused naming the field.
+TEST(SweepCommand, AResumeOfAFinishedFileSaysSoOrIsRefused) {
+  const std::string out = test::tempDir("sweep_finished") + "/s.csv";
+  const std::vector<std::string> args = {
+      "sweep",     minimal(), "--vary",    "/bodies/*/linear_velocity/0=uniform(0.5,1.5)",
+      "--samples", "4",       "--seconds", "0.1",
+      "--out",     out};
+  ASSERT_EQ(runCli(args).exit_code, 0);
+  const std::string whole = slurpBinary(out);
+  auto again = args;
+  again.push_back("--resume");
+  const auto same = runCli(again);
+  EXPECT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_NE(same.err.find("already holds all 4 samples: nothing to do"), std::string::npos)
+      << same.err;
+  again.insert(again.end(), {"--seed", "5"});
+  test::expectOneLineError(runCli(again), "seed differs");
+  EXPECT_EQ(slurpBinary(out), whole);
 }
 
 TEST(SweepCommand, BadInputsAreOneLineErrors) {

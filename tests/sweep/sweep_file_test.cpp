@@ -1,7 +1,10 @@
 // Sweeps written to their file as they run: rows in order as samples finish, a file cut at any
 // byte (as a killed process leaves it) resumed to the bytes of an uninterrupted run on any
 // thread count, and resumes that would mix two sweeps refused.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -50,8 +53,9 @@ TEST(SweepFile, RowsReachTheFileInOrderAsTheTableOfRunAll) {
   for (size_t i = 0; i < order.size(); ++i) EXPECT_EQ(order[i], static_cast<int64_t>(i));
   EXPECT_EQ(runSweepToFile(sweep, {path, 2, false}), 12);
   EXPECT_EQ(slurp(path), sweep.csv(sweep.runAll(1)));
-  // The journal is gone once the sweep ends.
-  EXPECT_FALSE(std::filesystem::exists(sweepJournalPath(path)));
+  // The journal stays beside the finished file, and so does the lock's file.
+  EXPECT_EQ(slurp(sweepJournalPath(path)), sweepJournal(sweep));
+  EXPECT_TRUE(std::filesystem::exists(path + ".lock"));
 }
 
 TEST(SweepFile, AFileCutAnywhereResumesToTheBytesOfOneRun) {
@@ -73,7 +77,7 @@ TEST(SweepFile, AFileCutAnywhereResumesToTheBytesOfOneRun) {
       write(sweepJournalPath(killed), sweepJournal(sweep));
       runSweepToFile(sweep, {killed, threads, true});
       EXPECT_EQ(slurp(killed), expected) << "cut at " << cut << ", " << threads << " threads";
-      EXPECT_FALSE(std::filesystem::exists(sweepJournalPath(killed)));
+      EXPECT_EQ(slurp(sweepJournalPath(killed)), sweepJournal(sweep));
     }
   }
   // A finished file resumes to itself: nothing runs.
@@ -114,6 +118,47 @@ TEST(SweepFile, ResumesThatWouldMixTwoSweepsAreRefused) {
               runSweepToFile(sweep, {dir + "/no/s.csv", 1, false});
             }).find("cannot open"),
             std::string::npos);
+}
+
+// One process at a time: a sweep whose file another holds is refused, naming the holder.
+TEST(SweepFile, ASecondWriterIsRefusedNamingTheHolder) {
+  const Sweep sweep(boxes());
+  const std::string path = test::tempDir("sweep_lock") + "/s.csv";
+  const int held = ::open((path + ".lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(held, 0);
+  ASSERT_EQ(::flock(held, LOCK_EX | LOCK_NB), 0);
+  ASSERT_EQ(::pwrite(held, "4242", 4, 0), 4);
+  for (const bool resume : {false, true}) {
+    const std::string error = test::errorOf([&] { runSweepToFile(sweep, {path, 1, resume}); });
+    EXPECT_NE(error.find("another sweep is writing it (process 4242 holds " + path + ".lock)"),
+              std::string::npos)
+        << error;
+  }
+  ::close(held);  // released: the sweep runs
+  EXPECT_EQ(runSweepToFile(sweep, {path, 1, false}), 12);
+}
+
+// A finished file keeps its journal: a resume with other arguments is refused naming the
+// field, one with the same arguments runs nothing; a changed row is refused naming its line.
+TEST(SweepFile, AFinishedOrTamperedFileIsCheckedOnResume) {
+  const Sweep sweep(boxes());
+  const std::string path = test::tempDir("sweep_done") + "/s.csv";
+  runSweepToFile(sweep, {path, 1, false});
+  const std::string whole = slurp(path);
+  const std::string other = test::errorOf([&] {
+    runSweepToFile(Sweep(boxes(4)), {path, 1, true});
+  });
+  EXPECT_NE(other.find("seed differs"), std::string::npos) << other;
+  EXPECT_EQ(runSweepToFile(sweep, {path, 1, true}), 0);
+  EXPECT_EQ(slurp(path), whole);
+  // Row 4 (line 6) replaced by five fields, some not numbers.
+  std::string tampered = whole;
+  const size_t start = tampered.find("\n4,") + 1;
+  tampered.replace(start, tampered.find('\n', start) - start, "4,nan,inf,-1e999,garbage");
+  write(path, tampered);
+  const std::string error = test::errorOf([&] { runSweepToFile(sweep, {path, 1, true}); });
+  EXPECT_NE(error.find("line 6 (sample 4) is not"), std::string::npos) << error;
+  EXPECT_EQ(slurp(path), tampered);  // refused before anything is cut or written
 }
 
 TEST(SweepFile, AFullDiskIsAnErrorNamingTheFile) {
