@@ -12,7 +12,9 @@
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
+#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
@@ -49,6 +51,44 @@ void saveNode(StateWriter& out, const btDbvtNode* node) {
   }
   saveNode(out, node->childs[0]);
   saveNode(out, node->childs[1]);
+}
+
+// A saved number Bullet indexes or loops with, checked before it is used.
+void checkCounter(const char* name, int64_t value, int64_t lo, int64_t hi) {
+  if (value < lo || value > hi)
+    throw Error(std::string("the state's broadphase ") + name + " is " + std::to_string(value) +
+                ", outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+}
+
+// Whether `leaf` hangs below the tree's root.
+bool isLeafOf(const btDbvt& tree, const btDbvtNode* leaf) {
+  const btDbvtNode* n = leaf;
+  while (n->parent) n = n->parent;
+  return n == tree.m_root;
+}
+
+// The broadphase's counters, each in the range Bullet keeps it in: the stage it fills next,
+// the percentages of leaves and pairs it revisits a step, and ids and indices that only grow
+// from 0 (far below where an int would overflow).
+void loadCounters(StateReader& in, btDbvtBroadphase& bp, int fixed_leaves) {
+  constexpr int64_t kMaxCount = int64_t{1} << 30;
+  const std::pair<const char*, std::pair<int64_t, int64_t>> ranges[] = {
+      {"stageCurrent", {0, btDbvtBroadphase::STAGECOUNT - 1}},
+      {"fupdates", {0, 100}},
+      {"dupdates", {0, 100}},
+      {"cupdates", {0, 100}},
+      {"newpairs", {0, kMaxCount}},
+      {"fixedleft", {0, fixed_leaves}},
+      {"pid", {0, kMaxCount}},
+      {"cid", {0, kMaxCount}},
+      {"gid", {0, kMaxCount}}};
+  int* counters[] = {&bp.m_stageCurrent, &bp.m_fupdates, &bp.m_dupdates,
+                     &bp.m_cupdates,     &bp.m_newpairs, &bp.m_fixedleft,
+                     &bp.m_pid,          &bp.m_cid,      &bp.m_gid};
+  for (size_t k = 0; k < std::size(counters); ++k) {
+    *counters[k] = in.get<int32_t>();
+    checkCounter(ranges[k].first, *counters[k], ranges[k].second.first, ranges[k].second.second);
+  }
 }
 
 }  // namespace
@@ -117,9 +157,9 @@ void CollisionDetector::Impl::saveBroadphase(StateWriter& out) const {
     out.put<int32_t>(p->stage);
     out.put<int32_t>(p->m_uniqueId);
   }
-  const int32_t counters[] = {bp.m_stageCurrent, bp.m_fupdates, bp.m_dupdates, bp.m_cupdates,
-                              bp.m_newpairs,     bp.m_fixedleft, bp.m_pid,      bp.m_cid,
-                              bp.m_gid};
+  const int32_t counters[] = {bp.m_stageCurrent, bp.m_fupdates, bp.m_dupdates,
+                              bp.m_cupdates,     bp.m_newpairs, bp.m_fixedleft,
+                              bp.m_pid,          bp.m_cid,      bp.m_gid};
   for (const int32_t c : counters) out.put(c);
   out.put<uint32_t>(bp.m_updates_call);
   out.put<uint32_t>(bp.m_updates_done);
@@ -130,18 +170,27 @@ void CollisionDetector::Impl::saveBroadphase(StateWriter& out) const {
 void CollisionDetector::Impl::loadBroadphase(StateReader& in) {
   btDbvtBroadphase& bp = *broadphase;
   TreeLoader loader{*this, in};
-  for (btDbvt& tree : bp.m_sets) {
+  std::array<int, 2> leaves{};  // as loaded, per tree
+  for (size_t t = 0; t < 2; ++t) {
+    btDbvt& tree = bp.m_sets[t];
     tree.clear();
     tree.m_lkhd = in.get<int32_t>();
     tree.m_leaves = in.get<int32_t>();
     tree.m_opath = in.get<uint32_t>();
+    const auto before = std::count(loader.placed.begin(), loader.placed.end(), 1);
     if (in.get<uint8_t>() != 0) tree.m_root = loader.node(nullptr);
+    leaves[t] =
+        static_cast<int>(std::count(loader.placed.begin(), loader.placed.end(), 1) - before);
+    // Bullet optimises a share of m_leaves each step: a forged count would run without end.
+    checkCounter("tree's leaf count", tree.m_leaves, leaves[t], leaves[t]);
   }
   if (std::find(loader.placed.begin(), loader.placed.end(), 0) != loader.placed.end())
     throw Error("the state's broadphase trees miss a collision shape");
   // Each proxy in one stage list, once (a repeat would make a list a loop).
   std::vector<uint8_t> listed(records.size(), 0);
-  for (btDbvtProxy*& head : bp.m_stageRoots) {
+  std::vector<int> list_of(records.size(), -1);  // the stage list each proxy is in
+  for (int stage = 0; stage <= btDbvtBroadphase::STAGECOUNT; ++stage) {
+    btDbvtProxy*& head = bp.m_stageRoots[stage];
     std::vector<int32_t> list;
     in.getVector(list);
     head = nullptr;
@@ -150,23 +199,29 @@ void CollisionDetector::Impl::loadBroadphase(StateReader& in) {
       btDbvtProxy* p = loader.proxy(record);
       if (listed[static_cast<size_t>(record)]++ != 0)
         throw Error("the state's broadphase lists shape " + std::to_string(record) + " twice");
+      list_of[static_cast<size_t>(record)] = stage;
       p->links[0] = previous;
       p->links[1] = nullptr;
       (previous ? previous->links[1] : head) = p;
       previous = p;
     }
   }
-  for (ShapeRecord& r : records) {
-    auto* p = static_cast<btDbvtProxy*>(r.object->getBroadphaseHandle());
+  for (size_t i = 0; i < records.size(); ++i) {
+    auto* p = static_cast<btDbvtProxy*>(records[i].object->getBroadphaseHandle());
     p->m_aabbMin = getVector3(in);
     p->m_aabbMax = getVector3(in);
     p->stage = in.get<int32_t>();
     p->m_uniqueId = in.get<int32_t>();
+    // A proxy's stage names its list, and the fixed stage its tree (Bullet removes it there).
+    if (list_of[i] < 0)
+      throw Error("the state's broadphase lists shape " + std::to_string(i) + " in no stage");
+    checkCounter("proxy's stage", p->stage, list_of[i], list_of[i]);
+    const bool fixed_tree = p->leaf != nullptr && isLeafOf(bp.m_sets[1], p->leaf);
+    if (fixed_tree != (p->stage == btDbvtBroadphase::STAGECOUNT))
+      throw Error("the state's broadphase puts shape " + std::to_string(i) +
+                  " in a tree other than its stage's");
   }
-  int* counters[] = {&bp.m_stageCurrent, &bp.m_fupdates, &bp.m_dupdates, &bp.m_cupdates,
-                     &bp.m_newpairs,     &bp.m_fixedleft, &bp.m_pid,      &bp.m_cid,
-                     &bp.m_gid};
-  for (int* c : counters) *c = in.get<int32_t>();
+  loadCounters(in, bp, leaves[1]);
   bp.m_updates_call = in.get<uint32_t>();
   bp.m_updates_done = in.get<uint32_t>();
   bp.m_updates_ratio = in.get<btScalar>();

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -192,6 +194,51 @@ TEST_F(CheckpointFile, OtherFilesAreNotStates) {
   EXPECT_NE(loadError(variant("text.state", "{\"bodies\": []}\n")).find("not an Asperity state"),
             std::string::npos);
   EXPECT_NE(loadError(dir_ + "/missing.state").find("cannot be read"), std::string::npos);
+}
+
+// The file with its state's checksum recomputed after `edit`, as a forger would (FNV-1a over the
+// state after the 52-byte header, stored at byte 44).
+std::string reSummed(std::string bytes) {
+  uint64_t hash = 1469598103934665603ull;
+  for (size_t i = 52; i < bytes.size(); ++i) {
+    hash ^= static_cast<unsigned char>(bytes[i]);
+    hash *= 1099511628211ull;
+  }
+  std::memcpy(bytes.data() + 44, &hash, sizeof(hash));
+  return bytes;
+}
+
+// Bullet's broadphase counters in the state: stageCurrent, then fupdates 1, dupdates 0 and
+// cupdates 10, which Bullet never changes (found by that run of values, which must be unique).
+size_t countersOffset(const std::string& bytes) {
+  const int32_t run[] = {1, 0, 10};
+  const std::string needle(reinterpret_cast<const char*>(run), sizeof(run));
+  const size_t at = bytes.find(needle, 52);
+  EXPECT_NE(at, std::string::npos);
+  EXPECT_EQ(bytes.find(needle, at + 1), std::string::npos) << "the counters' run is not unique";
+  return at - 4;
+}
+
+// Forged counters with a matching checksum: Bullet would index its stage lists with them or
+// loop over them (a crash at the first step, or 2^31 passes); each is refused at load, named.
+TEST_F(CheckpointFile, ForgedBroadphaseCountersAreRefusedNamingTheField) {
+  const size_t at = countersOffset(bytes_);
+  const std::pair<size_t, int32_t> forgeries[] = {
+      {0, 100000000}, {0, -3}, {8, -1}, {8, 2147483647}, {4, -1}, {12, -5}, {32, -1}};
+  const char* names[] = {"stageCurrent", "stageCurrent", "dupdates", "dupdates",
+                         "fupdates",     "cupdates",     "gid"};
+  for (size_t k = 0; k < std::size(forgeries); ++k) {
+    std::string forged = bytes_;
+    std::memcpy(forged.data() + at + forgeries[k].first, &forgeries[k].second, 4);
+    const std::string error = loadError(variant("forged.state", reSummed(forged)));
+    EXPECT_NE(error.find(std::string("the state's broadphase ") + names[k] + " is " +
+                         std::to_string(forgeries[k].second) + ", outside"),
+              std::string::npos)
+        << error;
+    EXPECT_EQ(error.rfind(dir_ + "/forged.state: ", 0), 0u) << error;
+  }
+  // The untouched counters load.
+  EXPECT_EQ(loadError(variant("same.state", reSummed(bytes_))), "");
 }
 
 // A device, a FIFO or a folder is refused by what it is, before a byte is read: /dev/zero
