@@ -12,7 +12,7 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release -DASPERITY_WERROR=ON
 
 SANITIZE_BUILD ?= build-sanitize
 FUZZ_SECONDS ?= 60
-FUZZ_TARGETS ?= scene png obj generators asset cli
+FUZZ_TARGETS ?= scene png obj generators asset cli state
 SOAK_SECONDS ?= 600
 
 .PHONY: all deps configure build demo node-tools test bench format clean sanitize-build sanitize fuzz soak

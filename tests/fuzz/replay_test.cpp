@@ -20,6 +20,7 @@ extern "C" int fuzzObj(const uint8_t* data, size_t size);
 extern "C" int fuzzGenerators(const uint8_t* data, size_t size);
 extern "C" int fuzzAsset(const uint8_t* data, size_t size);
 extern "C" int fuzzCli(const uint8_t* data, size_t size);
+extern "C" int fuzzState(const uint8_t* data, size_t size);
 
 namespace asperity {
 namespace {
@@ -68,6 +69,9 @@ TEST(FuzzReplay, AssetInputs) {
 }
 TEST(FuzzReplay, CliInputs) {
   EXPECT_GT(replay("cli", fuzzCli), 0u);
+}
+TEST(FuzzReplay, StateInputs) {
+  EXPECT_GT(replay("state", fuzzState), 0u);
 }
 
 }  // namespace
