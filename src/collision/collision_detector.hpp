@@ -31,16 +31,20 @@
 // and metre boxes get the same relative accuracy.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "asperity/collision/contact.hpp"
 #include "asperity/dynamics/body.hpp"
+#include "asperity/error.hpp"
 
 namespace asperity {
 
-class ThreadPool;  // parallel/thread_pool.hpp
+class ThreadPool;   // parallel/thread_pool.hpp
 class StateReader;  // asperity/math/state_stream.hpp
 class StateWriter;
 
@@ -62,6 +66,21 @@ struct CollisionSettings {
   int sdf_resolution = 64;       // grid cells along the longest side of a mesh's box
   int sdf_max_contacts = 32;     // per shape pair and direction, deepest first
   double sdf_min_spacing = 2.0;  // kept contacts lie at least this many grid cells apart
+  // Overlapping shape pairs the broadphase may find in one step (0: no limit). Past it the
+  // step stops before any pair gets its narrowphase state (Bullet's algorithms and manifolds,
+  // kilobytes a pair), so bodies piled into one point cost bounded time and memory.
+  int64_t max_pairs = 0;
+};
+
+// The broadphase found more pairs than CollisionSettings::max_pairs; the bodies in most pairs.
+class TooManyPairsError : public Error {
+ public:
+  TooManyPairsError(const std::string& message, std::vector<BodyId> bodies)
+      : Error(message), bodies_(std::move(bodies)) {}
+  const std::vector<BodyId>& bodies() const { return bodies_; }
+
+ private:
+  std::vector<BodyId> bodies_;
 };
 
 class CollisionDetector {

@@ -237,6 +237,8 @@ struct CollisionDetector::Impl {
   static void keepStaleIds(ManifoldList& scratch);
   void deferBoxPair(btBroadphasePair& pair, btCollisionDispatcher& d);
   void detectPairs();
+  // Throws TooManyPairsError when the broadphase found more pairs than settings.max_pairs.
+  void checkPairBudget(const btBroadphasePairArray& pairs) const;
   void processDeferred();
 
   // Manifold points into contacts (detector_manifolds.cpp).

@@ -3,6 +3,10 @@
 // waits for the pool.
 #include <algorithm>
 #include <cstddef>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "collision/contact_geometry.hpp"
 #include "collision/detector_impl.hpp"
@@ -206,18 +210,46 @@ void CollisionDetector::Impl::deferBoxPair(btBroadphasePair& pair, btCollisionDi
   if (pair.m_algorithm) deferred.push_back(&pair);
 }
 
+void CollisionDetector::Impl::checkPairBudget(const btBroadphasePairArray& pairs) const {
+  const int64_t budget = settings.max_pairs;
+  if (budget <= 0 || pairs.size() <= budget) return;
+  // The bodies in most pairs, most first (ties by id), three at most.
+  std::map<BodyId, int64_t> count;
+  for (int i = 0; i < pairs.size(); ++i)
+    for (const btBroadphaseProxy* p : {pairs[i].m_pProxy0, pairs[i].m_pProxy1})
+      ++count[records[static_cast<size_t>(
+                          static_cast<const btCollisionObject*>(p->m_clientObject)->getUserIndex())]
+                  .body];
+  std::vector<std::pair<int64_t, BodyId>> ranked;
+  for (const auto& [body, n] : count) ranked.push_back({-n, body});
+  std::sort(ranked.begin(), ranked.end());
+  std::vector<BodyId> worst;
+  std::string counts;
+  for (size_t k = 0; k < std::min<size_t>(3, ranked.size()); ++k) {
+    worst.push_back(ranked[k].second);
+    counts += (k ? ", " : "") + std::to_string(-ranked[k].first);
+  }
+  throw TooManyPairsError(std::to_string(pairs.size()) + " overlapping shape pairs, more than " +
+                              "max_pairs " + std::to_string(budget) + " (pairs of the bodies in " +
+                              "most: " + counts + ")",
+                          std::move(worst));
+}
+
 // Bullet's step (AABBs, broadphase, its walk over the pairs with nearCallback). On several
 // threads the walk is ours, over the same pair array in the same order: a box pair goes
 // straight to deferBoxPair (a pile's pairs, step after step, are only listed there), not
 // through nearCallback's tests of every other kind of pair.
 void CollisionDetector::Impl::detectPairs() {
-  if (!workers || pair_manifolds.size() == 1) {
-    world->performDiscreteCollisionDetection();
-    return;
-  }
   world->updateAabbs();
   world->computeOverlappingPairs();
   btBroadphasePairArray& pairs = world->getPairCache()->getOverlappingPairArray();
+  checkPairBudget(pairs);
+  if (!workers || pair_manifolds.size() == 1) {
+    // Bullet's own walk (performDiscreteCollisionDetection's last part).
+    world->getDispatcher()->dispatchAllCollisionPairs(
+        world->getPairCache(), world->getDispatchInfo(), world->getDispatcher());
+    return;
+  }
   const btDispatcherInfo& info = world->getDispatchInfo();
   for (int i = 0; i < pairs.size(); ++i) {
     btBroadphasePair& pair = pairs[i];

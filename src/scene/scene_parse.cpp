@@ -90,6 +90,11 @@ void parseSettings(JsonReader r, SceneDesc& scene) {
   s.max_correction_speed =
       r.number("max_correction_speed", s.max_correction_speed, Range::nonNegative(kHuge));
   s.max_speed = r.number("max_speed", s.max_speed, Range::nonNegative(kHuge));
+  const double max_pairs =
+      r.number("max_pairs", static_cast<double>(s.max_pairs), Range::closed(0.0, 1e12));
+  if (max_pairs != std::trunc(max_pairs))
+    r.failAt("max_pairs", "must be a whole number, got " + formatNumber(max_pairs));
+  s.max_pairs = static_cast<int64_t>(max_pairs);
   // SPEC 3: N, mu0, mu_max, w, R.
   parseFrictionSettings(r, s.friction);
   // Any friction provider, sampler or not; the old "sampler" is still read.

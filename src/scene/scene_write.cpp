@@ -176,6 +176,7 @@ json settingsToJson(const SceneDesc& scene) {
           {"contact_margin", s.contact_margin},
           {"max_correction_speed", s.max_correction_speed},
           {"max_speed", s.max_speed},
+          {"max_pairs", s.max_pairs},
           {"directions", f.directions},
           {"mu0", f.mu0},
           {"mu_max", static_cast<double>(f.mu_max)},

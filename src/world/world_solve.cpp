@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "asperity/error.hpp"
+#include "asperity/world/state_check.hpp"
 #include "asperity/world/world.hpp"
 #include "collision/bullet_shapes.hpp"
 #include "collision/collision_detector.hpp"
@@ -29,7 +30,10 @@ double World::prepare() {
   // Collision objects are rebuilt only when bodies or ignored pairs changed.
   if (!bodies_changed_) return 0.0;
   const auto start = std::chrono::steady_clock::now();
-  collision_->setBodies(bodies_, CollisionSettings{settings_.contact_margin});
+  CollisionSettings collision;
+  collision.contact_margin = settings_.contact_margin;
+  collision.max_pairs = settings_.max_pairs;
+  collision_->setBodies(bodies_, collision);
   slop_ = automaticSlop();
   bodies_changed_ = false;
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -39,7 +43,18 @@ double World::prepare() {
 void World::collide() {
   prepare();
   collision_->setSpeculativeTime(settings_.dt);
-  collision_->detect(bodies_, contacts_, pool_.get());
+  try {
+    collision_->detect(bodies_, contacts_, pool_.get());
+  } catch (const TooManyPairsError& e) {
+    // The step being taken, named as checkWorldState names a step, with the bodies' names.
+    std::string names;
+    for (const BodyId id : e.bodies())
+      names += (names.empty() ? "\"" : ", \"") + bodies_[id].name + "\"";
+    throw StepError("step " + std::to_string(steps_ + 1) + ": " + e.what() + " in " + names +
+                        "; likely cause: bodies placed in one another (raise max_pairs if the "
+                        "scene means it)",
+                    e.bodies().empty() ? kNoBody : e.bodies().front(), steps_ + 1);
+  }
 }
 
 FrameInputs World::frameInputs() {

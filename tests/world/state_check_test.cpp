@@ -62,6 +62,37 @@ TEST(StateCheck, RunawaySpeedNamesBodyAndStep) {
   EXPECT_NO_THROW(world.step());
 }
 
+// Bodies piled into one point: every pair overlaps. Past max_pairs the step stops at the
+// broadphase, before the pairs get their narrowphase state, naming the bodies in most pairs.
+TEST(StateCheck, BodiesPiledInOnePointStopAtThePairBudget) {
+  World world = weightless();
+  for (int i = 0; i < 1000; ++i)
+    world.createBody(boxDesc("box" + std::to_string(i), Vec3::Constant(0.1), {}));
+  const StepError e = stepUntilError(world, 1);
+  EXPECT_EQ(e.step(), 1);
+  EXPECT_EQ(e.body(), 0u);
+  EXPECT_NE(std::string(e.what()).find("step 1: 499500 overlapping shape pairs, more than "
+                                       "max_pairs 100000 (pairs of the bodies in most: 999, "
+                                       "999, 999) in \"box0\", \"box1\", \"box2\""),
+            std::string::npos)
+      << e.what();
+}
+
+TEST(StateCheck, ThePairBudgetIsASettingAndZeroHasNone) {
+  for (const int64_t budget : {int64_t{9}, int64_t{10}, int64_t{0}}) {
+    World world = weightless();
+    world.settings().max_pairs = budget;
+    for (int i = 0; i < 5; ++i)  // 10 pairs
+      world.createBody(boxDesc("box" + std::to_string(i), Vec3::Constant(0.1), {}));
+    if (budget == 9) {
+      EXPECT_NE(std::string(stepUntilError(world, 1).what()).find("10 overlapping shape pairs"),
+                std::string::npos);
+    } else {
+      EXPECT_NO_THROW(world.step()) << budget;
+    }
+  }
+}
+
 TEST(StateCheck, NonFiniteVelocityIsNamed) {
   World world = weightless();
   const BodyId cube = world.createBody(boxDesc("cube", Vec3::Constant(0.1), {}));

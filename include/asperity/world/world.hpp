@@ -57,6 +57,10 @@ struct WorldSettings {
   // m/s; World::step throws StepError when a dynamic body is faster (0 = no limit). Far above
   // anything the scenes do, it catches explosions before they turn into NaN.
   double max_speed = 1000.0;
+  // Overlapping shape pairs the broadphase may find in a step before World::step throws
+  // StepError naming the bodies in most (0 = no limit). Far above any scene's (a pile of 1000
+  // cubes has a few thousand); 1000 boxes placed in one point have 499 500.
+  int64_t max_pairs = 100000;
   // Worker threads of a step (oneTBB): 0 = every core, 1 = the calling thread only. Narrow
   // phase, frames, friction sampling, the solver's independent islands and integration are
   // split over them; the state after every step is the same bits whatever the count (SPEC 9).
