@@ -109,10 +109,15 @@ void World::loadState(std::string_view state) {
   StateReader in(state);
   const std::string provider = in.getString();
   if (provider != provider_->name())
-    throw Error("the state was saved with friction provider '" + provider +
-                "', this world uses '" + provider_->name() + "'");
+    throw Error("the state was saved with friction provider '" + provider + "', this world uses '" +
+                provider_->name() + "'");
   time_ = in.get<double>();
   steps_ = in.get<int64_t>();
+  // A clock that a run of steps could reach: finite, from 0, far below where dt stops adding.
+  if (!(time_ >= 0.0 && time_ <= 1e12))
+    throw Error("the state's clock is " + std::to_string(time_) + " s, outside [0, 1e12]");
+  if (steps_ < 0 || steps_ > (int64_t{1} << 53))
+    throw Error("the state's step count is " + std::to_string(steps_) + ", outside [0, 2^53]");
   in.expect<uint64_t>(bodies_.size(), "bodies");
   for (Body& b : bodies_) getBody(in, b);
   in.expect<uint64_t>(joints_.size(), "joints");

@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -239,6 +241,23 @@ TEST_F(CheckpointFile, ForgedBroadphaseCountersAreRefusedNamingTheField) {
   }
   // The untouched counters load.
   EXPECT_EQ(loadError(variant("same.state", reSummed(bytes_))), "");
+}
+
+// A forged clock or step count (after the provider's name, "cpu"): NaN, 1e300 (at which dt no
+// longer advances time) and a step count that would overflow are refused, named.
+TEST_F(CheckpointFile, AForgedClockOrStepCountIsRefused) {
+  const size_t clock = 52 + 8 + 3, count = clock + 8;
+  const auto forged = [&](size_t at, auto value) {
+    std::string bytes = bytes_;
+    std::memcpy(bytes.data() + at, &value, sizeof(value));
+    return loadError(variant("clock.state", reSummed(bytes)));
+  };
+  EXPECT_NE(forged(clock, std::nan("")).find("the state's clock is nan s"), std::string::npos);
+  EXPECT_NE(forged(clock, 1e300).find("outside [0, 1e12]"), std::string::npos);
+  EXPECT_NE(forged(clock, -1.0).find("the state's clock is -1"), std::string::npos);
+  EXPECT_NE(forged(count, std::numeric_limits<int64_t>::max()).find("the state's step count is"),
+            std::string::npos);
+  EXPECT_NE(forged(count, int64_t{-2}).find("step count is -2"), std::string::npos);
 }
 
 // A device, a FIFO or a folder is refused by what it is, before a byte is read: /dev/zero
