@@ -37,9 +37,21 @@ void writeAll(int fd, std::string_view bytes, const std::string& path) {
   }
 }
 
+// An output names the path it is given: a symbolic link there to a regular file (or to
+// nothing) is replaced, never written through into the file it names, and is refused when
+// the output would continue that file. A link to a device or pipe (/dev/stdout is one) is
+// written in place.
 int openForWriting(const std::string& path, const std::string& shown, bool keep) {
-  const int fd =
-      ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC | (keep ? O_APPEND : O_TRUNC), 0644);
+  struct stat entry {};
+  const bool in_place = special(path);
+  if (!in_place && ::lstat(path.c_str(), &entry) == 0 && S_ISLNK(entry.st_mode)) {
+    if (keep)
+      throw Error(shown + ": is a symbolic link; a file is continued only under its own name");
+    if (::unlink(path.c_str()) != 0) failOn(shown, "cannot replace the symbolic link");
+  }
+  const int flags =
+      O_WRONLY | O_CREAT | O_CLOEXEC | (keep ? O_APPEND : O_TRUNC) | (in_place ? 0 : O_NOFOLLOW);
+  const int fd = ::open(path.c_str(), flags, 0644);
   if (fd < 0) failOn(shown, "cannot open for writing");
   return fd;
 }

@@ -90,7 +90,7 @@ class SweepLock {
  public:
   explicit SweepLock(const std::string& path) {
     const std::string lock = path + ".lock";
-    fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
     if (fd_ < 0) failOn(path, "cannot open its lock " + lock + ": " + std::strerror(errno));
     if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
       char holder[32] = {};
@@ -200,6 +200,9 @@ int64_t runSweepToFile(const Sweep& sweep, const SweepFileOptions& options) {
   if (!std::filesystem::exists(path, kind_error) || std::filesystem::is_regular_file(path))
     lock = std::make_unique<SweepLock>(path);
   int64_t first = 0;
+  // Resuming reads and cuts the file: through a link it would cut the file the link names.
+  if (options.resume && std::filesystem::is_symlink(path))
+    failOn(path, "is a symbolic link; a file is continued only under its own name");
   if (options.resume) {
     if (!std::filesystem::exists(path)) failOn(path, "nothing to resume: the file does not exist");
     first = resumePoint(sweep, path, journal);

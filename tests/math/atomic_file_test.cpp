@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 
@@ -105,6 +105,45 @@ TEST(RecordFile, AppendsWholeRecordsAndKeepsOnRequest) {
               full.append("x\n");
             }),
             "--out /dev/full: write failed: No space left on device");
+}
+
+// One rule for links: an output replaces the link it is given, whole files and growing ones
+// alike, and never writes into the file the link names; a planted temporary link is replaced
+// too. Continuing a file through a link is refused; a link to a device is written in place.
+TEST(RecordFile, OutputsReplaceALinkAndNeverWriteThroughIt) {
+  const std::string dir = test::tempDir("links");
+  const std::string victim = dir + "/victim.txt";
+  std::ofstream(victim) << "keep me\n";
+  const auto linked = [&](const std::string& name) {
+    const std::string path = dir + "/" + name;
+    std::filesystem::remove(path);
+    std::filesystem::create_symlink(victim, path);
+    return path;
+  };
+  {
+    const std::string out = linked("run.csv");
+    RecordFile file(out);
+    file.append("1,2\n");
+    EXPECT_FALSE(std::filesystem::is_symlink(out));
+    EXPECT_EQ(slurp(out), "1,2\n");
+  }
+  const std::string whole = linked("scene.json");
+  writeFileAtomically(whole, "{}\n");
+  EXPECT_FALSE(std::filesystem::is_symlink(whole));
+  const std::string planted = dir + "/state.bin";
+  linked("state.bin.tmp");
+  writeFileAtomically(planted, "bytes");
+  EXPECT_EQ(slurp(planted), "bytes");
+  EXPECT_EQ(slurp(victim), "keep me\n");
+  const std::string resumed = linked("resume.csv");
+  EXPECT_EQ(errorOf([&] { RecordFile file(resumed, "", true); }),
+            resumed + ": is a symbolic link; a file is continued only under its own name");
+  const std::string to_device = dir + "/null";
+  std::filesystem::create_symlink("/dev/null", to_device);
+  RecordFile device(to_device);
+  device.append("x\n");
+  EXPECT_TRUE(std::filesystem::is_symlink(to_device));
+  EXPECT_EQ(slurp(victim), "keep me\n");
 }
 
 }  // namespace

@@ -161,6 +161,22 @@ TEST(SweepFile, AFinishedOrTamperedFileIsCheckedOnResume) {
   EXPECT_EQ(slurp(path), tampered);  // refused before anything is cut or written
 }
 
+// A resume through a symbolic link would cut the file the link names: refused, that file kept.
+TEST(SweepFile, AResumeThroughALinkIsRefused) {
+  const Sweep sweep(boxes());
+  const std::string dir = test::tempDir("sweep_link");
+  runSweepToFile(sweep, {dir + "/real.csv", 1, false});
+  const std::string half = slurp(dir + "/real.csv").substr(0, 300);
+  write(dir + "/real.csv", half);
+  std::filesystem::create_symlink(dir + "/real.csv", dir + "/link.csv");
+  write(sweepJournalPath(dir + "/link.csv"), sweepJournal(sweep));
+  EXPECT_NE(test::errorOf([&] {
+              runSweepToFile(sweep, {dir + "/link.csv", 1, true});
+            }).find("is a symbolic link"),
+            std::string::npos);
+  EXPECT_EQ(slurp(dir + "/real.csv"), half);
+}
+
 TEST(SweepFile, AFullDiskIsAnErrorNamingTheFile) {
   const Sweep sweep(boxes());
   const std::string message = test::errorOf([&] {
