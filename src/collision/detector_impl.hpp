@@ -215,6 +215,11 @@ struct CollisionDetector::Impl {
   struct TreeLoader;
   void saveBroadphase(StateWriter& out) const;
   void loadBroadphase(StateReader& in);
+  void readBroadphase(StateReader& in, TreeLoader& loader);
+  // After a failed load: every proxy a fresh leaf of the dynamic tree, in stage 0, so that
+  // Bullet's destructor (which removes each proxy's leaf from its stage's tree) finds whole
+  // trees; the loader's nodes are freed.
+  void rebuildBroadphase(TreeLoader& loader);
   void savePairs(StateWriter& out) const;
   void loadPairs(StateReader& in);
   // The saved manifolds made empty in their order (points returned, put in after the pairs).

@@ -99,6 +99,7 @@ struct CollisionDetector::Impl::TreeLoader {
   StateReader& in;
   int depth = 0;
   std::vector<uint8_t> placed = std::vector<uint8_t>(impl.records.size(), 0);  // leaf made
+  std::vector<btDbvtNode*> made = {};  // every node allocated, for rebuildBroadphase
 
   btDbvtProxy* proxy(int record) const {
     if (record < 0 || static_cast<size_t>(record) >= impl.records.size())
@@ -112,6 +113,7 @@ struct CollisionDetector::Impl::TreeLoader {
     // Deeper than any tree of 2^31 leaves could be balanced: a corrupt state.
     if (++depth > 4096) throw Error("the state's broadphase tree is corrupt");
     auto* n = new (btAlignedAlloc(sizeof(btDbvtNode), 16)) btDbvtNode();
+    made.push_back(n);
     n->parent = parent;
     n->childs[0] = n->childs[1] = nullptr;
     const btVector3 mi = getVector3(in);
@@ -168,12 +170,47 @@ void CollisionDetector::Impl::saveBroadphase(StateWriter& out) const {
 }
 
 void CollisionDetector::Impl::loadBroadphase(StateReader& in) {
-  btDbvtBroadphase& bp = *broadphase;
   TreeLoader loader{*this, in};
+  try {
+    readBroadphase(in, loader);
+  } catch (...) {
+    rebuildBroadphase(loader);
+    throw;
+  }
+}
+
+void CollisionDetector::Impl::rebuildBroadphase(TreeLoader& loader) {
+  btDbvtBroadphase& bp = *broadphase;
+  // The loaded nodes go (a tree cut short by the error is not reachable from its root).
+  for (btDbvt& tree : bp.m_sets) {
+    tree.m_root = nullptr;
+    tree.clear();
+  }
+  for (btDbvtNode* n : loader.made) btAlignedFree(n);
+  loader.made.clear();
+  for (btDbvtProxy*& head : bp.m_stageRoots) head = nullptr;
+  btDbvtProxy* previous = nullptr;
+  for (ShapeRecord& r : records) {
+    auto* p = static_cast<btDbvtProxy*>(r.object->getBroadphaseHandle());
+    p->leaf = bp.m_sets[0].insert(btDbvtVolume::FromMM(p->m_aabbMin, p->m_aabbMax), p);
+    p->stage = 0;
+    p->links[0] = previous;
+    p->links[1] = nullptr;
+    (previous ? previous->links[1] : bp.m_stageRoots[0]) = p;
+    previous = p;
+  }
+  bp.m_stageCurrent = 0;
+  bp.m_fixedleft = 0;
+  bp.m_fupdates = 1, bp.m_dupdates = 0, bp.m_cupdates = 10, bp.m_newpairs = 1, bp.m_cid = 0;
+}
+
+void CollisionDetector::Impl::readBroadphase(StateReader& in, TreeLoader& loader) {
+  btDbvtBroadphase& bp = *broadphase;
   std::array<int, 2> leaves{};  // as loaded, per tree
+  // Both trees emptied first: from here on every node in them is one the loader made.
+  for (btDbvt& tree : bp.m_sets) tree.clear();
   for (size_t t = 0; t < 2; ++t) {
     btDbvt& tree = bp.m_sets[t];
-    tree.clear();
     tree.m_lkhd = in.get<int32_t>();
     tree.m_leaves = in.get<int32_t>();
     tree.m_opath = in.get<uint32_t>();
@@ -211,7 +248,12 @@ void CollisionDetector::Impl::loadBroadphase(StateReader& in) {
     p->m_aabbMin = getVector3(in);
     p->m_aabbMax = getVector3(in);
     p->stage = in.get<int32_t>();
-    p->m_uniqueId = in.get<int32_t>();
+    // Ids come from creation order, the same in every world of the scene; Bullet's pair cache
+    // hashes pairs by them, so a changed one would leave its pairs unfindable (and a removal
+    // loop without end).
+    if (in.get<int32_t>() != p->m_uniqueId)
+      throw Error("the state's broadphase gives shape " + std::to_string(i) +
+                  " another id than this scene's");
     // A proxy's stage names its list, and the fixed stage its tree (Bullet removes it there).
     if (list_of[i] < 0)
       throw Error("the state's broadphase lists shape " + std::to_string(i) + " in no stage");
