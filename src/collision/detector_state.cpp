@@ -135,6 +135,31 @@ struct CollisionDetector::Impl::TreeLoader {
     --depth;
     return n;
   }
+
+  // Each proxy in one stage list, once (a repeat would make a list a loop); returns the list
+  // each proxy is in (-1: none).
+  std::vector<int> stageLists(btDbvtBroadphase& bp) {
+    std::vector<uint8_t> listed(impl.records.size(), 0);
+    std::vector<int> list_of(impl.records.size(), -1);
+    for (int stage = 0; stage <= btDbvtBroadphase::STAGECOUNT; ++stage) {
+      btDbvtProxy*& head = bp.m_stageRoots[stage];
+      std::vector<int32_t> list;
+      in.getVector(list);
+      head = nullptr;
+      btDbvtProxy* previous = nullptr;
+      for (const int32_t record : list) {
+        btDbvtProxy* p = proxy(record);
+        if (listed[static_cast<size_t>(record)]++ != 0)
+          throw Error("the state's broadphase lists shape " + std::to_string(record) + " twice");
+        list_of[static_cast<size_t>(record)] = stage;
+        p->links[0] = previous;
+        p->links[1] = nullptr;
+        (previous ? previous->links[1] : head) = p;
+        previous = p;
+      }
+    }
+    return list_of;
+  }
 };
 
 void CollisionDetector::Impl::saveBroadphase(StateWriter& out) const {
@@ -223,26 +248,7 @@ void CollisionDetector::Impl::readBroadphase(StateReader& in, TreeLoader& loader
   }
   if (std::find(loader.placed.begin(), loader.placed.end(), 0) != loader.placed.end())
     throw Error("the state's broadphase trees miss a collision shape");
-  // Each proxy in one stage list, once (a repeat would make a list a loop).
-  std::vector<uint8_t> listed(records.size(), 0);
-  std::vector<int> list_of(records.size(), -1);  // the stage list each proxy is in
-  for (int stage = 0; stage <= btDbvtBroadphase::STAGECOUNT; ++stage) {
-    btDbvtProxy*& head = bp.m_stageRoots[stage];
-    std::vector<int32_t> list;
-    in.getVector(list);
-    head = nullptr;
-    btDbvtProxy* previous = nullptr;
-    for (const int32_t record : list) {
-      btDbvtProxy* p = loader.proxy(record);
-      if (listed[static_cast<size_t>(record)]++ != 0)
-        throw Error("the state's broadphase lists shape " + std::to_string(record) + " twice");
-      list_of[static_cast<size_t>(record)] = stage;
-      p->links[0] = previous;
-      p->links[1] = nullptr;
-      (previous ? previous->links[1] : head) = p;
-      previous = p;
-    }
-  }
+  const std::vector<int> list_of = loader.stageLists(bp);
   for (size_t i = 0; i < records.size(); ++i) {
     auto* p = static_cast<btDbvtProxy*>(records[i].object->getBroadphaseHandle());
     p->m_aabbMin = getVector3(in);
