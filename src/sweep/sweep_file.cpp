@@ -99,9 +99,10 @@ class SweepLock {
       failOn(path, "another sweep is writing it (process " + std::string(n > 0 ? holder : "?") +
                        " holds " + lock + ")");
     }
+    // The holder's id only serves a second writer's message: failing to note it is no error.
     const std::string pid = std::to_string(::getpid());
-    if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) < 0) {
-    }
+    [[maybe_unused]] const bool noted =
+        ::ftruncate(fd_, 0) == 0 && ::pwrite(fd_, pid.data(), pid.size(), 0) >= 0;
   }
   ~SweepLock() { ::close(fd_); }
   SweepLock(const SweepLock&) = delete;
