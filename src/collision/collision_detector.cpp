@@ -127,8 +127,7 @@ void CollisionDetector::Impl::createWorld(size_t shape_count) {
   world->getPairCache()->setOverlapFilterCallback(&filter);
 }
 
-void CollisionDetector::Impl::addBody(BodyId id, const Body& body,
-                                      BoxPolyhedra& boxes) {
+void CollisionDetector::Impl::addBody(BodyId id, const Body& body, BoxPolyhedra& boxes) {
   for (size_t s = 0; s < body.shapes.size(); ++s) {
     ShapeRecord rec;
     rec.body = id;
@@ -283,6 +282,10 @@ void CollisionDetector::detect(std::span<const Body> bodies, std::vector<Contact
   // Straight into the caller's vector: one pass over the contacts fewer than copying them.
   impl_->collect(bodies, pool);
   impl_->sortInto(out);
+}
+
+void CollisionDetector::setMaxPairs(int64_t pairs) {
+  impl_->max_pairs = pairs;
 }
 
 void CollisionDetector::setSpeculativeTime(double seconds) {

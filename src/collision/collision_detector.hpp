@@ -66,13 +66,9 @@ struct CollisionSettings {
   int sdf_resolution = 64;       // grid cells along the longest side of a mesh's box
   int sdf_max_contacts = 32;     // per shape pair and direction, deepest first
   double sdf_min_spacing = 2.0;  // kept contacts lie at least this many grid cells apart
-  // Overlapping shape pairs the broadphase may find in one step (0: no limit). Past it the
-  // step stops before any pair gets its narrowphase state (Bullet's algorithms and manifolds,
-  // kilobytes a pair), so bodies piled into one point cost bounded time and memory.
-  int64_t max_pairs = 0;
 };
 
-// The broadphase found more pairs than CollisionSettings::max_pairs; the bodies in most pairs.
+// The broadphase found more pairs than setMaxPairs allows; the bodies in most pairs.
 class TooManyPairsError : public Error {
  public:
   TooManyPairsError(const std::string& message, std::vector<BodyId> bodies)
@@ -106,6 +102,11 @@ class CollisionDetector {
   // its size toward a plane in that time gets speculative plane contacts (phi < 0) up to that
   // distance, so it cannot pass through the plane in one step; 0 (default) = none.
   void setSpeculativeTime(double seconds);
+  // Overlapping shape pairs the broadphase may find in the next detections (0: no limit).
+  // Past it detect throws TooManyPairsError before any pair gets its narrowphase state
+  // (Bullet's algorithms and manifolds, kilobytes a pair), so bodies piled into one point cost
+  // bounded time and memory.
+  void setMaxPairs(int64_t pairs);
   // Numbers new contact points from 1 again, as in a new detector (with setBodies and the
   // solver's warm start forgotten: World::forgetContactHistory).
   void restartPointIds();

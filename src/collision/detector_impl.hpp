@@ -96,6 +96,7 @@ struct CollisionDetector::Impl {
 
   CollisionSettings settings;
   double speculative_time = 0.0;  // s, setSpeculativeTime
+  int64_t max_pairs = 0;          // setMaxPairs
   double scale = 1.0;             // Bullet's units per metre (bulletScale)
   std::vector<ShapeRecord> records;
   std::vector<BodyType> body_types;
@@ -242,7 +243,7 @@ struct CollisionDetector::Impl {
   static void keepStaleIds(ManifoldList& scratch);
   void deferBoxPair(btBroadphasePair& pair, btCollisionDispatcher& d);
   void detectPairs();
-  // Throws TooManyPairsError when the broadphase found more pairs than settings.max_pairs.
+  // Throws TooManyPairsError when the broadphase found more pairs than max_pairs.
   void checkPairBudget(const btBroadphasePairArray& pairs) const;
   void processDeferred();
 

@@ -211,7 +211,7 @@ void CollisionDetector::Impl::deferBoxPair(btBroadphasePair& pair, btCollisionDi
 }
 
 void CollisionDetector::Impl::checkPairBudget(const btBroadphasePairArray& pairs) const {
-  const int64_t budget = settings.max_pairs;
+  const int64_t budget = max_pairs;
   if (budget <= 0 || pairs.size() <= budget) return;
   // The bodies in most pairs, most first (ties by id), three at most.
   std::map<BodyId, int64_t> count;

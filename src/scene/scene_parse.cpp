@@ -33,20 +33,24 @@ void parseFrameSettings(JsonReader& r, FrameSettings& f) {
                              Range::nonNegative(kHuge));
 }
 
+// A number checked against its range (an integer one included) before it becomes an int, a
+// float or an int64, so a value past the target type is refused rather than converted.
+static double checkedNumber(JsonReader& r, const char* key, const SettingRange& range,
+                            double fallback) {
+  const double value = r.number(key, fallback);
+  if (const std::string bad = range.check(value); !bad.empty()) r.failAt(key, bad);
+  return value;
+}
+
 void parseFrictionSettings(JsonReader& r, FrictionSettings& f) {
-  // Each number against its one range, before it becomes an int or a float.
-  const auto read = [&r](const char* key, const SettingRange& range, double fallback) {
-    const double value = r.number(key, fallback);
-    if (const std::string bad = range.check(value); !bad.empty()) r.failAt(key, bad);
-    return value;
-  };
-  f.directions = static_cast<int>(read("directions", friction_range::directions, f.directions));
-  f.mu0 = read("mu0", friction_range::mu0, f.mu0);
-  f.mu_max = static_cast<float>(read("mu_max", friction_range::mu_max, f.mu_max));
-  f.patch_width = read("patch_width", friction_range::patch_width, f.patch_width);
+  f.directions =
+      static_cast<int>(checkedNumber(r, "directions", friction_range::directions, f.directions));
+  f.mu0 = checkedNumber(r, "mu0", friction_range::mu0, f.mu0);
+  f.mu_max = static_cast<float>(checkedNumber(r, "mu_max", friction_range::mu_max, f.mu_max));
+  f.patch_width = checkedNumber(r, "patch_width", friction_range::patch_width, f.patch_width);
   f.patch_resolution = static_cast<int>(
-      read("patch_resolution", friction_range::patch_resolution, f.patch_resolution));
-  f.reuse_pixels = read("reuse_pixels", friction_range::reuse_pixels, f.reuse_pixels);
+      checkedNumber(r, "patch_resolution", friction_range::patch_resolution, f.patch_resolution));
+  f.reuse_pixels = checkedNumber(r, "reuse_pixels", friction_range::reuse_pixels, f.reuse_pixels);
   f.texel_reading = r.enumeration("texel_reading", f.texel_reading, kTexelReadingNames);
 }
 
@@ -90,11 +94,9 @@ void parseSettings(JsonReader r, SceneDesc& scene) {
   s.max_correction_speed =
       r.number("max_correction_speed", s.max_correction_speed, Range::nonNegative(kHuge));
   s.max_speed = r.number("max_speed", s.max_speed, Range::nonNegative(kHuge));
-  const double max_pairs =
-      r.number("max_pairs", static_cast<double>(s.max_pairs), Range::closed(0.0, 1e12));
-  if (max_pairs != std::trunc(max_pairs))
-    r.failAt("max_pairs", "must be a whole number, got " + formatNumber(max_pairs));
-  s.max_pairs = static_cast<int64_t>(max_pairs);
+  constexpr SettingRange kMaxPairsRange{0.0, 1e12, false, true};
+  s.max_pairs = static_cast<int64_t>(
+      checkedNumber(r, "max_pairs", kMaxPairsRange, static_cast<double>(s.max_pairs)));
   // SPEC 3: N, mu0, mu_max, w, R.
   parseFrictionSettings(r, s.friction);
   // Any friction provider, sampler or not; the old "sampler" is still read.

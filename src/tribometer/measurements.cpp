@@ -1,7 +1,6 @@
 // Measurements of a material pair for calibration (calibrate.hpp): CSV of angle_deg,mu, of tilt
 // angles, or of slides of a launched block, each row turned into a coefficient.
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -10,6 +9,7 @@
 
 #include "asperity/error.hpp"
 #include "asperity/tribometer/calibrate.hpp"
+#include "math/number_text.hpp"
 
 namespace asperity {
 
@@ -83,10 +83,8 @@ double rowMu(MeasurementKind kind, const std::vector<std::string>& c, double gra
              const std::string& where) {
   const double mu = measuredMu(kind, c, gravity, where);
   if (!(mu <= kMaxMeasuredMu)) {
-    char text[32];
-    std::snprintf(text, sizeof(text), "%g", mu);
-    throw Error(where + ": the row gives mu = " + text + ", more than " +
-                std::to_string(static_cast<int>(kMaxMeasuredMu)) + " (no measured pair grips so)");
+    throw Error(where + ": the row gives mu = " + formatNumber(mu) + ", more than " +
+                formatNumber(kMaxMeasuredMu) + " (no measured pair grips so)");
   }
   return mu;
 }

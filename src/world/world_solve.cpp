@@ -30,10 +30,7 @@ double World::prepare() {
   // Collision objects are rebuilt only when bodies or ignored pairs changed.
   if (!bodies_changed_) return 0.0;
   const auto start = std::chrono::steady_clock::now();
-  CollisionSettings collision;
-  collision.contact_margin = settings_.contact_margin;
-  collision.max_pairs = settings_.max_pairs;
-  collision_->setBodies(bodies_, collision);
+  collision_->setBodies(bodies_, CollisionSettings{settings_.contact_margin});
   slop_ = automaticSlop();
   bodies_changed_ = false;
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -43,10 +40,11 @@ double World::prepare() {
 void World::collide() {
   prepare();
   collision_->setSpeculativeTime(settings_.dt);
+  collision_->setMaxPairs(settings_.max_pairs);
   try {
     collision_->detect(bodies_, contacts_, pool_.get());
   } catch (const TooManyPairsError& e) {
-    // The step being taken, named as checkWorldState names a step, with the bodies' names.
+    // The step being taken (counted as checkWorldState counts it), the bodies by name.
     std::string names;
     for (const BodyId id : e.bodies())
       names += (names.empty() ? "\"" : ", \"") + bodies_[id].name + "\"";

@@ -1,6 +1,6 @@
 // The friction stage's settings (N, mu0, mu_max, w, R, reuse, texel reading) and the one range
 // of each, shared by every front end: scenes, engine surfaces files, ContactFriction, the
-// Python module, the CLI and the samplers all check through validate() or checkRange(), so a
+// Python module, the CLI and the samplers all check through validate() or SettingRange::check, so a
 // value out of range is refused with the same words wherever it is given.
 #pragma once
 
