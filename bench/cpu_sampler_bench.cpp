@@ -25,8 +25,9 @@ namespace asperity {
 namespace {
 
 void run(benchmark::State& state, bench::SamplerScene& scene, int n,
-         const CpuSamplerOptions& options = {}, TexelReading reading = TexelReading::Nearest) {
-  CpuPatchSampler sampler(options);
+         const FrictionModelSettings& models = {}, TexelReading reading = TexelReading::Nearest) {
+  CpuPatchSampler sampler;
+  sampler.setFrictionModels(models);
   FrictionSettings settings;
   settings.directions = n;
   settings.texel_reading = reading;
@@ -65,19 +66,18 @@ BENCHMARK(BM_BoxOnPlane)
 // their generators, steel on oak, each contact loaded with 20 N (its previous impulse).
 void BM_BoxOnPlaneContactArea(benchmark::State& state) {
   bench::SamplerScene scene = bench::boxesOnPlane(static_cast<int>(state.range(1)));
-  CpuSamplerOptions options;
-  options.contact_area.model = FrictionModel::ContactArea;
-  options.contact_area.dt = 0.01;
+  FrictionModelSettings models;
+  models.model = FrictionModel::ContactArea;
+  models.dt = 0.01;
   for (size_t i = 0; i < scene.bodies.size(); ++i) {
     for (Shape& shape : scene.bodies[i].shapes) {
       shape.surface.source.generator.name = i == 0 ? "stone" : "oak";
       shape.surface.source.generator.size = 256;
+      shape.surface.mechanical = findMechanical(i == 0 ? "steel" : "oak");
     }
-    options.contact_area.mechanical[{static_cast<int>(i), -1}] =
-        findMechanical(i == 0 ? "steel" : "oak");
   }
-  for (Contact& c : scene.contacts) c.lambda_n = 20.0 * options.contact_area.dt;
-  run(state, scene, static_cast<int>(state.range(0)), options);
+  for (Contact& c : scene.contacts) c.lambda_n = 20.0 * models.dt;
+  run(state, scene, static_cast<int>(state.range(0)), models);
 }
 BENCHMARK(BM_BoxOnPlaneContactArea)->ArgNames({"N", "contacts"})->Args({4, 1000})->Args({16, 1000});
 

@@ -28,8 +28,8 @@ void BM_GlBoxOnPlane(benchmark::State& state) {
   double patch = 0.0, averaging = 0.0;
   for (auto _ : state) {
     sampler.computeCoefficients(scene.bodies, scene.contacts, settings);
-    patch += sampler.lastPatchTimeMs();
-    averaging += sampler.lastAveragingTimeMs();
+    patch += sampler.lastStats().patch_ms;
+    averaging += sampler.lastStats().averaging_ms;
   }
   const auto contacts = static_cast<double>(scene.contacts.size());
   const auto iterations = static_cast<double>(state.iterations());

@@ -102,6 +102,8 @@ Contact ContactFriction::Impl::toContact(const EngineContact& e, size_t index) c
     throw Error(what() + "normal must be a unit vector");
   if (!(e.depth >= 0.0) || !std::isfinite(e.depth))
     throw Error(what() + "depth must be a finite number >= 0");
+  if (!(e.normal_force >= 0.0) || !std::isfinite(e.normal_force))
+    throw Error(what() + "normal_force must be a finite number >= 0");
   Contact c;
   c.body_a = e.object_a;
   c.body_b = e.object_b;
@@ -116,6 +118,7 @@ Contact ContactFriction::Impl::toContact(const EngineContact& e, size_t index) c
   c.witness_a = e.point - 0.5 * e.depth * e.normal;
   c.witness_b = e.point + 0.5 * e.depth * e.normal;
   c.key = e.key;
+  c.lambda_n = e.normal_force;  // the models read a force: ContactFriction gives them dt = 1
   return c;
 }
 
@@ -199,6 +202,8 @@ ContactFriction::ContactFriction(ContactFrictionSettings settings,
     : impl_(std::make_unique<Impl>()) {
   checkSettings(settings);
   impl_->provider = providers.make(settings.provider);
+  settings.models.dt = 1.0;
+  impl_->provider->setFrictionModels(settings.models);
   if (settings.threads != 1) impl_->pool = std::make_unique<ThreadPool>(settings.threads);
   impl_->provider->setThreadPool(impl_->pool.get());
   impl_->settings = std::move(settings);

@@ -6,6 +6,7 @@
 
 #include "asperity/error.hpp"
 #include "asperity/friction/directions.hpp"
+#include "asperity/math/enum_names.hpp"
 #include "asperity/world/world.hpp"
 #include "scene/scene_common.hpp"
 
@@ -27,6 +28,8 @@ ContactFrictionSettings parseSettings(JsonReader r) {
   f.mu0 = 0.0;
   scene::parseFrictionSettings(r, f);
   s.provider = r.string("friction_provider", s.provider);
+  s.models.model = r.enumeration("friction_model", s.models.model,
+                                 EnumNames<FrictionModel>(kFrictionModelNames));
   scene::parseFrameSettings(r, s.frame);
   s.threads = r.integer("threads", s.threads, 0, kMaxThreads);
   r.finish();
@@ -36,7 +39,12 @@ ContactFrictionSettings parseSettings(JsonReader r) {
 // One "surfaces" entry, its normal map resolved; resolving errors name the entry.
 EngineSurface parseEntry(JsonReader& surfaces, const std::string& name, const std::string& base_dir,
                          Diagnostics& diagnostics) {
-  EngineSurface entry{name, scene::parseSurface(surfaces.object(name), base_dir)};
+  JsonReader object = surfaces.object(name);
+  std::optional<Mechanical> mechanical;
+  nlohmann::json rest;
+  EngineSurface entry{
+      name, scene::parseSurface(scene::withoutMechanical(object, mechanical, rest), base_dir)};
+  entry.surface.mechanical = mechanical;
   try {
     resolveSurface(entry.surface, diagnostics);
   } catch (const Error& e) {

@@ -9,9 +9,10 @@
 #include "asperity/friction/directions.hpp"
 #include "asperity/friction/fragment_model.hpp"
 #include "parallel/thread_pool.hpp"
+#include "sampler/models/friction_models.hpp"
 #include "sampler/patch_common.hpp"
-#include "sampler/patch_contact_area.hpp"
 #include "sampler/patch_geometry.hpp"
+#include "sampler/patch_heights.hpp"
 #include "sampler/patch_reuse.hpp"
 #include "sampler/patch_shade.hpp"
 
@@ -39,69 +40,42 @@ double msBetween(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
-// The model of a contact: its pair's, else the sampler's (ContactAreaOptions::modelFor) for
-// the first shape of each side.
-FrictionModel modelOf(const ContactAreaOptions& area, std::span<const Body> bodies,
-                      const Contact& contact) {
-  if (area.pair_model.empty()) return area.model;
-  const patch::ShapeRange a = patch::shapesOf(bodies, contact, Side::A);
-  const patch::ShapeRange b = patch::shapesOf(bodies, contact, Side::B);
-  return area.modelFor(static_cast<int>(contact.body_a), a.first, static_cast<int>(contact.body_b),
-                       b.first);
-}
-
 }  // namespace
-
-FrictionModel ContactAreaOptions::modelFor(int body_a, int shape_a, int body_b, int shape_b) const {
-  if (pair_model.empty()) return model;
-  const auto classOf = [&](int body, int shape) {
-    auto it = surface_class.find({body, shape});
-    if (it == surface_class.end()) it = surface_class.find({body, -1});
-    return it == surface_class.end() ? -1 : it->second;
-  };
-  const int a = classOf(body_a, shape_a), b = classOf(body_b, shape_b);
-  if (a < 0 || b < 0) return model;
-  const auto found = pair_model.find({std::min(a, b), std::max(a, b)});
-  return found == pair_model.end() ? model : found->second;
-}
-
-bool ContactAreaOptions::anyContactArea() const {
-  if (model == FrictionModel::ContactArea) return true;
-  for (const auto& entry : pair_model)
-    if (entry.second == FrictionModel::ContactArea) return true;
-  return false;
-}
 
 // Scratch kept between calls: rasters, fragment arrays, sample directions.
 struct CpuPatchSampler::State {
   State(patch::MeshCache& shared, const CpuSamplerOptions& opt,
         const patch::HeightCache& height_cache)
-      : meshes(shared), simd(opt.simd), area(opt.contact_area), heights(height_cache) {}
+      : meshes(shared), simd(opt.simd), heights(height_cache) {
+    for (size_t m = 0; m < std::size(models::kFrictionModelVariants); ++m)
+      if (models::kFrictionModelVariants[m]->make_scratch)
+        model_scratch[m] = models::kFrictionModelVariants[m]->make_scratch();
+  }
   patch::MeshCache& meshes;           // the sampler's, shared by every thread's state
   SimdCopy simd;                      // the sampler's option, for every loop this state runs
-  const ContactAreaOptions& area;     // the sampler's option
   const patch::HeightCache& heights;  // the sampler's, shared (read only while sampling)
-  patch::AreaScratch area_scratch;
   patch::GeometryScratch geometry;
   std::array<patch::SurfaceRaster, 2> raster;  // A, B
   std::vector<uint32_t> in_patch;              // P as Volume::pack(i, j)
-  std::vector<float> gx, gy;
+  std::vector<float> gx, gy;                   // P's ploughing vectors, A's then B's
+  std::vector<float> height, depth;            // for models that read them, A's then B's
   std::vector<Vec2> directions;
-  std::array<std::array<double, kMaxDirections>, 2> sums{};
+  // Each model's scratch, in FrictionModel's order (null for a model that needs none).
+  std::array<std::unique_ptr<models::ModelScratch>, std::size(models::kFrictionModelVariants)>
+      model_scratch;
   double patch_ms = 0.0, averaging_ms = 0.0;
 
   void prepare(const FrictionSettings& settings);
   void rasterise(const patch::Volume& volume, const patch::ShapeRange (&ranges)[2], bool whole);
   // Returns the margins of the depth clip decisions on A and B (patch_reuse.hpp).
   std::array<patch::DepthMargins, 2> sample(std::span<const Body> bodies, Contact& contact,
-                                            const FrictionSettings& settings, PatchImages* images);
+                                            const FrictionSettings& settings,
+                                            const models::FrictionModelVariant& model, double dt,
+                                            PatchImages* images);
   void fillImages(const patch::Volume& volume, const FrictionSettings& settings,
                   PatchImages& images);
-  // Eq. 8 and 7 over P (the paper's model), or the contact-area model (SPEC 13).
-  void finishPaper(const patch::ShapeRange (&ranges)[2], Contact& contact,
-                   const FrictionSettings& settings, size_t count);
-  void finishWithArea(const patch::Volume& volume, const patch::ShapeRange (&ranges)[2],
-                      Contact& contact, const FrictionSettings& settings);
+  // The heights and depths of P's fragments (for a model that reads them).
+  void readHeights(const patch::Volume& volume);
   void reserveLike(const State& other);
 };
 
@@ -114,7 +88,10 @@ void CpuPatchSampler::State::reserveLike(const State& other) {
   in_patch.reserve(other.in_patch.capacity());
   gx.reserve(other.gx.capacity());
   gy.reserve(other.gy.capacity());
-  area_scratch.reserveLike(other.area_scratch);
+  height.reserve(other.height.capacity());
+  depth.reserve(other.depth.capacity());
+  for (size_t m = 0; m < model_scratch.size(); ++m)
+    if (model_scratch[m]) model_scratch[m]->reserveLike(*other.model_scratch[m]);
   for (size_t s = 0; s < 2; ++s) {
     patch::SurfaceRaster& r = raster[s];
     const patch::SurfaceRaster& o = other.raster[s];
@@ -203,10 +180,9 @@ void CpuPatchSampler::State::fillImages(const patch::Volume& volume,
   }
 }
 
-std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<const Body> bodies,
-                                                                  Contact& contact,
-                                                                  const FrictionSettings& settings,
-                                                                  PatchImages* images) {
+std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(
+    std::span<const Body> bodies, Contact& contact, const FrictionSettings& settings,
+    const models::FrictionModelVariant& model, double dt, PatchImages* images) {
   const Clock::time_point t0 = Clock::now();
   prepare(settings);
   patch::Volume volume = patch::makeVolume(contact, settings);
@@ -216,18 +192,28 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   // Rasterise both surfaces and find P, then shade P into ploughing vectors (A, then B).
   rasterise(volume, ranges, images != nullptr);
   const size_t count = in_patch.size();
-  // The contact-area model shades only the pixels in contact (finishWithArea).
-  const bool area_model = modelOf(area, bodies, contact) == FrictionModel::ContactArea;
-  for (size_t s = 0; s < 2 && count > 0 && !area_model; ++s) {
+  for (size_t s = 0; s < 2 && count > 0; ++s) {
     patch::shadePloughing(volume, raster[s], in_patch, settings.mu_max, gx.data() + s * count,
                           gy.data() + s * count);
   }
+  if (model.reads_heights) readHeights(volume);
   const Clock::time_point t1 = Clock::now();
-  if (area_model) {
-    finishWithArea(volume, ranges, contact, settings);
-  } else {
-    finishPaper(ranges, contact, settings, count);
+  // The contact's model reduces P's fragments.
+  models::PatchFragments fragments{volume.resolution, volume.pixel, in_patch};
+  models::ModelInputs in{directions, patch::gainsOf(ranges[0], ranges[1], settings.mu0),
+                         settings.mu_max, dt};
+  for (size_t s = 0; s < 2; ++s) {
+    fragments.gx[s] = gx.data() + s * count;
+    fragments.gy[s] = gy.data() + s * count;
+    if (model.reads_heights) {
+      fragments.height[s] = height.data() + s * count;
+      fragments.depth[s] = depth.data() + s * count;
+    }
+    in.surfaces[s] = patch::firstSurface(ranges[s]);
+    in.shapes[s] = ranges[s].first;
   }
+  in.simd = simd;
+  model.reduce(fragments, in, contact, model_scratch[static_cast<size_t>(model.kind)].get());
   const Clock::time_point t2 = Clock::now();
   if (images != nullptr) fillImages(volume, settings, *images);
   patch_ms += msBetween(t0, t1);
@@ -235,113 +221,86 @@ std::array<patch::DepthMargins, 2> CpuPatchSampler::State::sample(std::span<cons
   return {raster[0].depth, raster[1].depth};
 }
 
-void CpuPatchSampler::State::finishPaper(const patch::ShapeRange (&ranges)[2], Contact& contact,
-                                         const FrictionSettings& settings, size_t count) {
-  const size_t n = directions.size();
-  // Eq. 8 sums through the friction module's kernel.
+void CpuPatchSampler::State::readHeights(const patch::Volume& volume) {
+  const size_t count = in_patch.size();
+  height.resize(2 * count);
+  depth.resize(2 * count);
   for (size_t s = 0; s < 2; ++s) {
-    std::fill(sums[s].begin(), sums[s].begin() + static_cast<long>(n), 0.0);
-    if (count == 0) continue;
-    accumulateDirectionalSums(std::span<const float>(gx.data() + s * count, count),
-                              std::span<const float>(gy.data() + s * count, count), directions,
-                              std::span<double>(sums[s].data(), n), simd);
+    patch::heightsOf(volume, raster[s], in_patch, heights, height.data() + s * count);
+    float* out = depth.data() + s * count;
+    for (size_t k = 0; k < count; ++k) {
+      const uint32_t p = in_patch[k];
+      out[k] = raster[s].key[(p >> 16) * static_cast<uint32_t>(volume.resolution) + (p & 0xffffu)];
+    }
   }
-  // Eq. 7 (or the fallback).
-  patch::finishContact(contact, std::span<const double>(sums[0].data(), n),
-                       std::span<const double>(sums[1].data(), n), static_cast<int>(count),
-                       patch::gainsOf(ranges[0], ranges[1], settings.mu0));
-}
-
-void CpuPatchSampler::State::finishWithArea(const patch::Volume& volume,
-                                            const patch::ShapeRange (&ranges)[2], Contact& contact,
-                                            const FrictionSettings& settings) {
-  patch::AreaInputs in;
-  in.options = &area;
-  in.heights = &heights;
-  in.directions = directions;
-  in.gains = patch::gainsOf(ranges[0], ranges[1], settings.mu0);
-  in.mu_max = settings.mu_max;
-  in.simd = simd;
-  patch::finishAreaContact(volume, raster, in_patch, patch::mechanicalOf(area, contact, ranges), in,
-                           contact, area_scratch);
 }
 
 CpuPatchSampler::CpuPatchSampler(const CpuSamplerOptions& options)
     : options_(options),
       meshes_(std::make_unique<patch::MeshCache>()),
-      reuse_(std::make_unique<patch::PatchReuse>()),
       heights_(std::make_unique<patch::HeightCache>()) {
   state_ = std::make_unique<State>(*meshes_, options_, *heights_);
 }
 
-void CpuPatchSampler::forgetHistory() {
-  reuse_ = std::make_unique<patch::PatchReuse>();
-}
-void CpuPatchSampler::saveHistory(StateWriter& out) const {
-  reuse_->save(out);
-}
-
-void CpuPatchSampler::loadHistory(StateReader& in) {
-  reuse_->load(in);
-}
-
 CpuPatchSampler::~CpuPatchSampler() = default;
+
+void CpuPatchSampler::prepareHeights(std::span<const Body> bodies,
+                                     std::span<Contact* const> contacts) {
+  // Made here, on the calling thread, for all threads.
+  for (const Contact* c : contacts)
+    if (modelOf(bodies, *c).reads_heights) heights_->prepare(bodies, *c);
+}
 
 void CpuPatchSampler::sampleContact(std::span<const Body> bodies, Contact& contact,
                                     const FrictionSettings& settings, PatchImages* images) {
   validate(settings, "cpu sampler");
-  if (modelOf(options_.contact_area, bodies, contact) == FrictionModel::ContactArea)
-    heights_->prepare(bodies, contact);
-  state_->sample(bodies, contact, settings, images);
+  const models::FrictionModelVariant& model = modelOf(bodies, contact);
+  if (model.reads_heights) heights_->prepare(bodies, contact);
+  state_->sample(bodies, contact, settings, model, models().dt, images);
 }
 
 void CpuPatchSampler::computeCoefficients(std::span<const Body> bodies, std::span<Contact> contacts,
                                           const FrictionSettings& settings) {
   validate(settings, "cpu sampler");
   // Contacts whose earlier sample still holds keep it; the others are sampled.
-  reuse_->reuse(bodies, contacts, settings, reused_);
-  reused_count_ = static_cast<int>(std::count(reused_.begin(), reused_.end(), uint8_t{1}));
-  // The contact-area model's heights are made here, on the calling thread, for all threads.
-  if (options_.contact_area.anyContactArea()) {
-    for (size_t i = 0; i < contacts.size(); ++i)
-      if (!reused_[i] &&
-          modelOf(options_.contact_area, bodies, contacts[i]) == FrictionModel::ContactArea)
-        heights_->prepare(bodies, contacts[i]);
-  }
+  const std::span<Contact* const> to_sample = keepSamples(bodies, contacts, settings);
+  prepareHeights(bodies, to_sample);
   if (!pool_ || pool_->concurrency() == 1) {
     // One contact after the other; scratch is reused.
     State& st = *state_;
     st.patch_ms = st.averaging_ms = 0.0;
-    for (size_t i = 0; i < contacts.size(); ++i)
-      if (!reused_[i]) reuse_->margins(i) = st.sample(bodies, contacts[i], settings, nullptr);
-    patch_ms_ = st.patch_ms;
-    averaging_ms_ = st.averaging_ms;
+    for (Contact* c : to_sample)
+      reuse().margins(static_cast<size_t>(c - contacts.data())) =
+          st.sample(bodies, *c, settings, modelOf(bodies, *c), models().dt, nullptr);
+    stats_.patch_ms = st.patch_ms;
+    stats_.averaging_ms = st.averaging_ms;
   } else {
-    sampleOnPool(bodies, contacts, settings);
+    sampleOnPool(bodies, contacts, to_sample, settings);
   }
-  reuse_->remember(bodies, contacts, reused_);
+  rememberSamples(bodies, contacts);
 }
 
 void CpuPatchSampler::sampleOnPool(std::span<const Body> bodies, std::span<Contact> contacts,
+                                   std::span<Contact* const> to_sample,
                                    const FrictionSettings& settings) {
   // Every mesh the contacts may rasterise is built here, on the calling thread: the threads
   // then only look the cache up, and share one BVH per mesh.
-  for (size_t i = 0; i < contacts.size(); ++i)
-    if (!reused_[i]) patch::prepareMeshes(*meshes_, bodies, contacts[i], false);
+  for (const Contact* c : to_sample) patch::prepareMeshes(*meshes_, bodies, *c, false);
   while (worker_states_.size() < static_cast<size_t>(pool_->concurrency()))
     worker_states_.push_back(std::make_unique<State>(*meshes_, options_, *heights_));
   for (auto& st : worker_states_) st->patch_ms = st->averaging_ms = 0.0;
   // Each contact is sampled alone (it writes only itself), with the scratch of the thread
   // that runs it: the coefficients are the same whichever thread that is.
-  pool_->forEach(contacts.size(), 4, [&](size_t i) {
-    if (reused_[i]) return;
+  pool_->forEach(to_sample.size(), 4, [&](size_t k) {
+    Contact& c = *to_sample[k];
     State& st = *worker_states_[static_cast<size_t>(pool_->slot())];
-    reuse_->margins(i) = st.sample(bodies, contacts[i], settings, nullptr);
+    reuse().margins(static_cast<size_t>(&c - contacts.data())) =
+        st.sample(bodies, c, settings, modelOf(bodies, c), models().dt, nullptr);
   });
-  patch_ms_ = averaging_ms_ = 0.0;
+  stats_.patch_ms = stats_.averaging_ms = 0.0;
   for (const auto& st : worker_states_) {
-    patch_ms_ += st->patch_ms;
-    averaging_ms_ += st->averaging_ms;
+    stats_.patch_ms += st->patch_ms;
+    stats_.averaging_ms += st->averaging_ms;
   }
   // Which thread samples which contact varies from step to step: every thread's scratch
   // grows to the largest, so that a warmed-up step allocates on no thread.

@@ -50,35 +50,18 @@ ShapeRange shapesOf(std::span<const Body> bodies, const Contact& c, Side side) {
   return {&body, shape, shape + 1};
 }
 
+const Surface* firstSurface(const ShapeRange& range) {
+  return range.first < range.last ? &range.body->shapes[static_cast<size_t>(range.first)].surface
+                                  : nullptr;
+}
+
 double gainOf(const ShapeRange& range) {
-  return range.first < range.last
-             ? range.body->shapes[static_cast<size_t>(range.first)].surface.gain
-             : 0.0;
+  const Surface* surface = firstSurface(range);
+  return surface != nullptr ? surface->gain : 0.0;
 }
 
 PatchGains gainsOf(const ShapeRange& a, const ShapeRange& b, double mu0) {
   return {mu0, gainOf(a), gainOf(b)};
-}
-
-void finishContact(Contact& c, std::span<const double> sums_a, std::span<const double> sums_b,
-                   int count, const PatchGains& gains) {
-  const int n = static_cast<int>(sums_a.size());
-  c.covered_pixels = count;
-  // Empty P: the nominal coefficient, counted as a fallback (SPEC 3).
-  if (count == 0) {
-    c.mu = DirectionalMu::uniform(n, static_cast<float>(gains.mu0));
-    c.fallback = true;
-    return;
-  }
-  // Eq. 8: means over P; Eq. 7 through the friction module.
-  std::array<double, kMaxDirections> mean_a{}, mean_b{};
-  for (int k = 0; k < n; ++k) {
-    mean_a[static_cast<size_t>(k)] = sums_a[static_cast<size_t>(k)] / count;
-    mean_b[static_cast<size_t>(k)] = sums_b[static_cast<size_t>(k)] / count;
-  }
-  c.mu = combinePatch(std::span<const double>(mean_a.data(), static_cast<size_t>(n)),
-                      std::span<const double>(mean_b.data(), static_cast<size_t>(n)), gains);
-  c.fallback = false;
 }
 
 Transform shapePose(const Body& body, int index) {

@@ -1,5 +1,5 @@
 // What the CPU and OpenGL patch samplers share: the viewing volume of a contact (SPEC 3), the
-// surfaces and gains of its two bodies, and the last step of both pipelines (Eqs. 8 and 7).
+// surfaces and gains of its two bodies.
 #pragma once
 
 #include <array>
@@ -33,11 +33,8 @@ ShapeRange shapesOf(std::span<const Body> bodies, const Contact& contact, Side s
 PatchGains gainsOf(const ShapeRange& a, const ShapeRange& b, double mu0);
 // The gain k of one surface (its first shape's; 0 for none).
 double gainOf(const ShapeRange& range);
-
-// Eq. 8 then Eq. 7: means of the per-surface sums over |P| = count pixels into contact.mu;
-// count == 0 gives the fallback mu = mu0 (contact.fallback = true).
-void finishContact(Contact& contact, std::span<const double> sums_a, std::span<const double> sums_b,
-                   int count, const PatchGains& gains);
+// The surface of a side's first shape (null for none): the one its model and gain are of.
+const Surface* firstSurface(const ShapeRange& range);
 
 // The world pose of shape `index` of `body`.
 Transform shapePose(const Body& body, int index);

@@ -150,6 +150,8 @@ std::optional<Mechanical> parseMechanical(JsonReader& r, const std::string& key)
   return m;
 }
 
+}  // namespace
+
 // The JSON of a surface entry less its "mechanical" key, read into `mechanical`: what both a
 // materials entry and an inline surface take beside a surface's keys.
 JsonReader withoutMechanical(JsonReader& r, std::optional<Mechanical>& mechanical,
@@ -160,6 +162,8 @@ JsonReader withoutMechanical(JsonReader& r, std::optional<Mechanical>& mechanica
   rest.erase("mechanical");
   return JsonReader(rest, r.file(), r.pointer());
 }
+
+namespace {
 
 // A shape's "surface": an object, or the name of an entry of "materials" (a copy of that entry).
 // `names_color` tells whether it gives a base colour.

@@ -136,6 +136,16 @@ BodyDesc resolveMeshes(const SceneDesc& scene, size_t index, scene::ResourceCach
 }
 
 // Resolves a body's surfaces (normal maps and masks) and its asset meshes.
+// The mechanical values of shape k of body i: its inline surface's, else those of the material
+// it names; null where there are none.
+const Mechanical* mechanicalOf(const SceneDesc& scene, size_t i, size_t k) {
+  const auto own = scene.surface_mechanical.find({i, k});
+  if (own != scene.surface_mechanical.end()) return &own->second;
+  const auto found = scene.materials.find(scene.bodies[i].shapes[k].surface.source.material);
+  if (found != scene.materials.end() && found->second.mechanical) return &*found->second.mechanical;
+  return nullptr;
+}
+
 BodyDesc resolveBody(const SceneDesc& scene, size_t index, scene::ResourceCache& cache,
                      Diagnostics& diagnostics) {
   BodyDesc desc = scene.bodies[index];
@@ -148,6 +158,8 @@ BodyDesc resolveBody(const SceneDesc& scene, size_t index, scene::ResourceCache&
           withContext(scene, ptr + "/normal_map", [&] { return cache.normalMap(s, diagnostics); });
     if (!s.mask)
       s.mask = withContext(scene, ptr + "/mask", [&] { return cache.mask(s.source.mask_file); });
+    if (const Mechanical* m = mechanicalOf(scene, index, i); m != nullptr && !s.mechanical)
+      s.mechanical = *m;
   }
   return resolveMeshes(scene, index, cache, diagnostics, std::move(desc));
 }
@@ -200,93 +212,53 @@ void createConnections(const SceneDesc& scene, World& world) {
   }
 }
 
-// The mechanical values of shape k of body i: its inline surface's, else those of the material
-// it names; null where there are none.
-const Mechanical* mechanicalOf(const SceneDesc& scene, size_t i, size_t k) {
-  const auto own = scene.surface_mechanical.find({i, k});
-  if (own != scene.surface_mechanical.end()) return &own->second;
-  const auto found = scene.materials.find(scene.bodies[i].shapes[k].surface.source.material);
-  if (found != scene.materials.end() && found->second.mechanical) return &*found->second.mechanical;
-  return nullptr;
-}
-
-// Whether any contact of the scene may use the contact-area model: the scene's model, or a
-// pair's.
-bool usesContactArea(const SceneDesc& scene) {
-  if (scene.friction_model == FrictionModel::ContactArea) return true;
+// The scene's friction models: its "friction_model" and its "pairs" by material names. Throws,
+// naming the shape, where the scene's contact-area model meets a surface without mechanical
+// values (the pairs' materials were checked when the scene was read).
+FrictionModelSettings frictionModels(const SceneDesc& scene) {
+  FrictionModelSettings models;
+  models.model = scene.friction_model;
+  models.dt = scene.settings.dt / scene.settings.substeps;  // the impulse the solver keeps
   for (const ScenePair& p : scene.pairs)
-    if (p.friction_model == FrictionModel::ContactArea) return true;
-  return false;
-}
-
-// The contact-area model's provider: the cpu sampler with each shape's mechanical values (its
-// own or its material's; body and shape indices are the world's: bodies are created in scene
-// order), and the scene's pairs as classes of surfaces (one per material, by the material
-// table's order). Throws, naming the setting or the shape, where they do not fit the model.
-std::unique_ptr<FrictionProvider> contactAreaProvider(const SceneDesc& scene) {
-  std::string pointer = "/settings/friction_model";
-  for (size_t p = 0; p < scene.pairs.size() && scene.friction_model != FrictionModel::ContactArea;
-       ++p) {
-    if (scene.pairs[p].friction_model == FrictionModel::ContactArea) {
-      pointer = "/pairs/" + std::to_string(p) + "/friction_model";
-      break;
-    }
-  }
-  withContext(scene, pointer, [&] {
-    if (scene.friction_provider != "cpu")
-      throw Error("contact_area needs friction_provider \"cpu\", got \"" + scene.friction_provider +
-                  "\"");
-  });
-  CpuSamplerOptions options;
-  ContactAreaOptions& area = options.contact_area;
-  area.model = scene.friction_model;
-  area.dt = scene.settings.dt / scene.settings.substeps;  // the impulse the solver keeps
-  std::map<std::string, int> classes;
-  for (const auto& entry : scene.materials)
-    classes.emplace(entry.first, static_cast<int>(classes.size()));
-  for (const ScenePair& p : scene.pairs) {
-    const int a = classes.at(p.materials[0]), b = classes.at(p.materials[1]);
-    area.pair_model[{std::min(a, b), std::max(a, b)}] = p.friction_model;
-  }
+    models.setPair(p.materials[0], p.materials[1], p.friction_model);
+  if (scene.friction_model != FrictionModel::ContactArea) return models;
   for (size_t i = 0; i < scene.bodies.size(); ++i) {
-    const std::vector<Shape>& shapes = scene.bodies[i].shapes;
-    for (size_t k = 0; k < shapes.size(); ++k) {
-      const std::pair<int, int> key{static_cast<int>(i), static_cast<int>(k)};
-      const auto named = classes.find(shapes[k].surface.source.material);
-      if (named != classes.end()) area.surface_class[key] = named->second;
-      if (const Mechanical* m = mechanicalOf(scene, i, k)) {
-        area.mechanical[key] = *m;
-        continue;
-      }
-      // Under the scene's contact_area every surface needs values (the pairs' materials were
-      // checked when the scene was read).
-      if (scene.friction_model != FrictionModel::ContactArea) continue;
-      const std::string& name = shapes[k].surface.source.material;
+    for (size_t k = 0; k < scene.bodies[i].shapes.size(); ++k) {
+      if (mechanicalOf(scene, i, k) != nullptr) continue;
+      const std::string& name = scene.bodies[i].shapes[k].surface.source.material;
       withContext(
           scene, "/bodies/" + std::to_string(i) + "/shapes/" + std::to_string(k) + "/surface", [&] {
             throw Error(
-                "friction_model contact_area needs every surface to have "
-                "\"mechanical\" values (E, nu, H, tau), its own or its "
-                "material's" +
+                "friction_model contact_area needs every surface to have \"mechanical\" values "
+                "(E, nu, H, tau), its own or its material's" +
                 (name.empty() ? std::string(", this one has none")
                               : "; material \"" + name + "\" has none"));
           });
     }
   }
-  return std::make_unique<CpuPatchSampler>(options);
+  return models;
+}
+
+// Where the scene names its models: the pair or setting a provider that cannot serve them is
+// reported at.
+std::string modelsPointer(const SceneDesc& scene) {
+  if (scene.friction_model != FrictionModel::Paper) return "/settings/friction_model";
+  for (size_t p = 0; p < scene.pairs.size(); ++p)
+    if (scene.pairs[p].friction_model != FrictionModel::Paper)
+      return "/pairs/" + std::to_string(p) + "/friction_model";
+  return "/settings/friction_model";
 }
 
 }  // namespace
 
 std::unique_ptr<World> instantiate(const SceneDesc& scene, const InstantiateOptions& options) {
   auto world = std::make_unique<World>(scene.settings);
-  if (usesContactArea(scene)) {
-    world->setFrictionProvider(contactAreaProvider(scene));
-  } else {
-    world->setFrictionProvider(withContext(scene, "/settings/friction_provider", [&] {
-      return options.providers.make(scene.friction_provider);
-    }));
-  }
+  std::unique_ptr<FrictionProvider> provider =
+      withContext(scene, "/settings/friction_provider",
+                  [&] { return options.providers.make(scene.friction_provider); });
+  const FrictionModelSettings models = frictionModels(scene);
+  withContext(scene, modelsPointer(scene), [&] { provider->setFrictionModels(models); });
+  world->setFrictionProvider(std::move(provider));
   // What loading the scene found comes first among the world's warnings.
   for (const std::string& warning : scene.warnings) world->diagnostics().warn(warning);
   // Bodies, with equal surfaces and meshes sharing one resolved copy (across worlds too when

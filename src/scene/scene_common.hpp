@@ -2,10 +2,12 @@
 // against the scene's folder, and exact degree <-> radian conversion for round trips.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "asperity/contact_area/mechanical.hpp"
 #include "asperity/scene/scene.hpp"
 #include "scene/json_reader.hpp"
 
@@ -38,6 +40,10 @@ void parseMaterials(JsonReader& root, SceneDesc& scene);
 // colour); files resolve against base_dir and must exist. Also read by the engines' surfaces
 // files (asperity/engines/engine_surfaces.hpp).
 Surface parseSurface(JsonReader r, const std::string& base_dir);
+// The JSON of a surface entry less its "mechanical" key (a preset name or {"E", "nu", "H",
+// "tau"}), read into `mechanical`; `rest` holds the copy the returned reader reads.
+JsonReader withoutMechanical(JsonReader& r, std::optional<Mechanical>& mechanical,
+                             nlohmann::json& rest);
 // Parses the "bodies" array (shapes, surfaces, OBJ meshes), checking names are unique.
 void parseBodies(JsonReader& root, SceneDesc& scene);
 // Writes one body back (with its meshes from scene.meshes).

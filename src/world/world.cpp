@@ -78,9 +78,10 @@ void World::step() {
 }
 
 void World::recordContacts(StepProfile& p) const {
-  p.patch_ms = provider_->lastPatchTimeMs();
-  p.averaging_ms = provider_->lastAveragingTimeMs();
-  p.reused = provider_->lastReusedCount();
+  const ProviderStats stats = provider_->lastStats();
+  p.patch_ms = stats.patch_ms;
+  p.averaging_ms = stats.averaging_ms;
+  p.reused = stats.reused;
   p.contacts = static_cast<int>(contacts_.size());
   p.fallbacks = static_cast<int>(std::count_if(contacts_.begin(), contacts_.end(),
                                                [](const Contact& c) { return c.fallback; }));

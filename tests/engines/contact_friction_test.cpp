@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "asperity/contact_area/mechanical.hpp"
 #include "asperity/error.hpp"
 #include "asperity/sampler/cpu_patch_sampler.hpp"
 #include "asperity/world/builders.hpp"
@@ -92,6 +93,54 @@ TEST(ContactFriction, GivesAnEnginesContactsWhatAWorldStepGivesItsOwn) {
     EXPECT_EQ(results[i].bounds.mu_neg_b, box.mu_neg_b);
     EXPECT_GT(results[i].bounds.mu_pos_b, 0.2);  // the rough v direction adds to mu0
   }
+}
+
+// Under the contact-area model (a stone ground and a steel cube, each with mechanical values)
+// an engine's contacts get a world's coefficients, and the engine's normal force is the load.
+TEST(ContactFriction, ServesTheContactAreaModelWithTheEnginesNormalForce) {
+  FrictionModelSettings area;
+  area.model = FrictionModel::ContactArea;
+  auto world = std::make_unique<World>(WorldSettings{});
+  BodyDesc ground = groundPlaneDesc();
+  ground.shapes[0].surface.source.generator = {"stone", {}, 256, 3};
+  ground.shapes[0].surface.mechanical = findMechanical("concrete");
+  resolveSurface(ground.shapes[0].surface, world->diagnostics());
+  world->createBody(ground);
+  BodyDesc cube = boxDesc("cube", Vec3(0.1, 0.1, 0.1), {Vec3(0.0, 0.0, 0.0995)});
+  cube.shapes[0].surface.mechanical = findMechanical("steel");
+  world->createBody(cube);
+  auto sampler = std::make_unique<CpuPatchSampler>();
+  sampler->setFrictionModels(area);
+  world->setFrictionProvider(std::move(sampler));
+  std::vector<ObjectState> before;
+  for (const Body& b : world->bodies())
+    before.push_back({b.pose, b.linear_velocity, b.angular_velocity});
+  world->step();  // new contacts: no load yet, so both take the light load
+  ASSERT_GE(world->contacts().size(), 4u);
+
+  ContactFrictionSettings settings;
+  settings.provider = "cpu";
+  settings.models = area;
+  ContactFriction friction(settings);
+  for (size_t i = 0; i < world->bodies().size(); ++i)
+    friction.setState(friction.addObject(objectOf(world->bodies()[i])), before[i]);
+  std::vector<EngineContact> contacts;
+  for (const Contact& c : world->contacts()) contacts.push_back(engineContact(c));
+  const auto first = friction.compute(contacts);
+  const std::vector<ContactFrictionResult> light(first.begin(), first.end());
+  for (size_t i = 0; i < light.size(); ++i)
+    for (int k = 0; k < light[i].mu.count; ++k)
+      EXPECT_NEAR(light[i].mu.mu[static_cast<size_t>(k)],
+                  world->contacts()[i].mu.mu[static_cast<size_t>(k)], 1e-6);
+  // The engine's force is the load: pressed hard enough to flatten the summits, far more of
+  // the patch is in contact (covered_pixels counts the pixels in contact under this model).
+  for (EngineContact& e : contacts) e.normal_force = 1e6;
+  friction.forgetHistory();
+  const auto loaded = friction.compute(contacts);
+  for (size_t i = 0; i < loaded.size(); ++i)
+    EXPECT_GT(loaded[i].covered_pixels, 10 * light[i].covered_pixels);
+  contacts[0].normal_force = -1.0;
+  EXPECT_THROW(friction.compute(contacts), Error);
 }
 
 // A ring of contacts of boxes on the rough ground, keyless, as many engines hand them over.

@@ -36,6 +36,29 @@ TEST(EngineSurfaces, ReadsSettingsAndResolvedSurfacesByName) {
   EXPECT_EQ(s.find("wall"), nullptr);
 }
 
+// The friction model and the surfaces' mechanical values, as a scene takes them.
+TEST(EngineSurfaces, ReadsTheFrictionModelAndMechanicalValues) {
+  const nlohmann::json json = R"({
+    "settings": {"friction_provider": "cpu", "friction_model": "contact_area"},
+    "surfaces": {"floor": {"mechanical": "concrete", "gain": 2},
+                 "box": {"mechanical": {"E": 2e11, "nu": 0.3, "H": 2e9, "tau": 1e8}}}})"_json;
+  const EngineSurfaces s = parseEngineSurfaces(json, "s.json");
+  EXPECT_EQ(s.settings.models.model, FrictionModel::ContactArea);
+  ASSERT_TRUE(s.find("floor")->mechanical.has_value());
+  EXPECT_EQ(s.find("floor")->mechanical->name, "concrete");
+  EXPECT_EQ(s.find("floor")->gain, 2.0);
+  EXPECT_EQ(s.find("box")->mechanical->modulus, 2e11);
+  const std::string bad = errorOf(
+      [] { parseEngineSurfaces(R"({"settings": {"friction_model": "sticky"}})"_json, "s.json"); });
+  EXPECT_NE(bad.find("/settings/friction_model"), std::string::npos) << bad;
+  EXPECT_NE(bad.find("contact_area"), std::string::npos) << bad;
+  const std::string preset = errorOf([] {
+    parseEngineSurfaces(R"({"surfaces": {"box": {"mechanical": "granite"}}})"_json, "s.json");
+  });
+  EXPECT_NE(preset.find("/surfaces/box/mechanical: unknown mechanical preset"), std::string::npos)
+      << preset;
+}
+
 TEST(EngineSurfaces, BadInputNamesTheFileAndTheEntry) {
   const auto error = [](const char* text) {
     return errorOf([&] { parseEngineSurfaces(nlohmann::json::parse(text), "s.json"); });

@@ -30,29 +30,30 @@ GeneratorSpec plaster(uint64_t seed) {
   return spec;
 }
 
-// A rough plane (plaster: normals and heights from one generator) under a flat box bottom;
-// one texel per patch pixel, texel centres on pixel centres.
+// A rough acrylic plane (plaster: normals and heights from one generator) under a flat steel
+// box bottom; one texel per patch pixel, texel centres on pixel centres.
 Scene roughPlaneFlatBox(uint64_t seed) {
   Body plane = planeBody(std::make_shared<NormalMap>(generateNormalMap(plaster(seed))), kW, 1.5);
   plane.shapes[0].surface.source.generator = plaster(seed);
-  return {{plane, boxBody(Vec3(0.1, 0.1, 0.1), {Vec3(0, 0, 0.1)}, nullptr, 0.1, 1.0)},
-          contactAt(Vec3::Zero(), 1e-5)};
+  plane.shapes[0].surface.mechanical = findMechanical("acrylic");
+  Body box = boxBody(Vec3(0.1, 0.1, 0.1), {Vec3(0, 0, 0.1)}, nullptr, 0.1, 1.0);
+  box.shapes[0].surface.mechanical = findMechanical("steel");
+  return {{plane, box}, contactAt(Vec3::Zero(), 1e-5)};
 }
 
-CpuSamplerOptions areaOptions(const std::string& box, const std::string& plane) {
-  CpuSamplerOptions o;
-  o.contact_area.model = FrictionModel::ContactArea;
-  o.contact_area.dt = kDt;
-  o.contact_area.mechanical[{1, -1}] = findMechanical(box);
-  o.contact_area.mechanical[{0, 0}] = findMechanical(plane);
-  return o;
+FrictionModelSettings areaModel() {
+  FrictionModelSettings m;
+  m.model = FrictionModel::ContactArea;
+  m.dt = kDt;
+  return m;
 }
 
 // The model's mu per direction at load W on the rough plane.
 DirectionalMu modelMu(double load, uint64_t seed, PatchImages* images = nullptr) {
   Scene scene = roughPlaneFlatBox(seed);
   scene.contact.lambda_n = load * kDt;
-  CpuPatchSampler sampler(areaOptions("steel", "acrylic"));
+  CpuPatchSampler sampler;
+  sampler.setFrictionModels(areaModel());
   sampler.sampleContact(scene.bodies, scene.contact, settings(8, kR, kW), images);
   return scene.contact.mu;
 }
@@ -96,8 +97,9 @@ TEST(ContactAreaModel, MatchesTheOfflineSolverPlusPloughingOverTheContact) {
       for (size_t k = 0; k < 8; ++k) {
         const double expected = adhesion + 1.5 * mean[k] / touching;
         EXPECT_NEAR(mu.mu[k], expected, 1e-3 * expected) << seed << " " << load << " " << k;
-        worst_if_over_p = std::max(
-            worst_if_over_p, std::abs(adhesion + 1.5 * over_p[k] / (kR * kR) - expected) / expected);
+        worst_if_over_p =
+            std::max(worst_if_over_p,
+                     std::abs(adhesion + 1.5 * over_p[k] / (kR * kR) - expected) / expected);
       }
       EXPECT_GT(worst_if_over_p, 0.01);
       EXPECT_GT(adhesion, 0.05);
@@ -133,9 +135,9 @@ TEST(ContactAreaModel, NewContactGetsTheLightLoadCoefficient) {
 // A surface without mechanical values cannot take part: the error names it.
 TEST(ContactAreaModel, SurfaceWithoutMechanicalValuesIsAnError) {
   Scene scene = roughPlaneFlatBox(3);
-  CpuSamplerOptions o = areaOptions("steel", "acrylic");
-  o.contact_area.mechanical.erase({0, 0});
-  CpuPatchSampler sampler(o);
+  scene.bodies[0].shapes[0].surface.mechanical.reset();
+  CpuPatchSampler sampler;
+  sampler.setFrictionModels(areaModel());
   try {
     sampler.sampleContact(scene.bodies, scene.contact, settings(8, kR, kW));
     FAIL() << "no error";
@@ -150,9 +152,11 @@ TEST(ContactAreaModel, SurfaceWithoutMechanicalValuesIsAnError) {
 TEST(ContactAreaModel, PaperModelIsUnchangedByTheAreaOptions) {
   Scene a = roughPlaneFlatBox(3), b = roughPlaneFlatBox(3);
   b.contact.lambda_n = 5.0;
-  CpuSamplerOptions o = areaOptions("steel", "acrylic");
-  o.contact_area.model = FrictionModel::Paper;
-  CpuPatchSampler plain, with_options(o);
+  for (Body& body : a.bodies) body.shapes[0].surface.mechanical.reset();
+  FrictionModelSettings paper = areaModel();
+  paper.model = FrictionModel::Paper;
+  CpuPatchSampler plain, with_options;
+  with_options.setFrictionModels(paper);
   plain.sampleContact(a.bodies, a.contact, settings(8, kR, kW));
   with_options.sampleContact(b.bodies, b.contact, settings(8, kR, kW));
   for (size_t k = 0; k < 8; ++k) EXPECT_EQ(a.contact.mu.mu[k], b.contact.mu.mu[k]);

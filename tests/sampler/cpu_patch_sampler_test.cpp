@@ -71,8 +71,8 @@ TEST(CpuPatchSampler, ReportsTimes) {
   CpuPatchSampler sampler;
   std::vector<Contact> contacts(50, scene.contact);
   sampler.computeCoefficients(scene.bodies, contacts, settings());
-  EXPECT_GT(sampler.lastPatchTimeMs(), 0.0);
-  EXPECT_GE(sampler.lastAveragingTimeMs(), 0.0);
+  EXPECT_GT(sampler.lastStats().patch_ms, 0.0);
+  EXPECT_GE(sampler.lastStats().averaging_ms, 0.0);
   EXPECT_EQ(sampler.name(), "cpu");
 }
 

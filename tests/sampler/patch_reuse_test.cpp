@@ -68,7 +68,7 @@ class CheckedReuse : public FrictionProvider {
         far += apart > 0.005;
       }
   }
-  int lastReusedCount() const override { return sampler_.lastReusedCount(); }
+  ProviderStats lastStats() const override { return sampler_.lastStats(); }
   double worst = 0.0;
   int kept = 0, far = 0;  // (contact, direction) pairs that differ at all, by more than 0.005
 

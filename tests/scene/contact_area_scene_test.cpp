@@ -108,7 +108,11 @@ TEST(ContactAreaScene, BadInputIsAClearError) {
   nlohmann::json cone = sceneJson();
   cone["settings"]["friction_provider"] = "cone";
   what = errorOf(cone);
-  EXPECT_NE(what.find("contact_area needs friction_provider \"cpu\""), std::string::npos) << what;
+  EXPECT_NE(what.find("/settings/friction_model: friction model contact_area reads the fragments "
+                      "of each patch: it needs a patch sampler (\"cpu\" or \"gl\"), not the "
+                      "\"cone\" provider"),
+            std::string::npos)
+      << what;
 
   nlohmann::json preset = sceneJson();
   preset["materials"]["concrete"]["mechanical"] = "granite";
@@ -226,24 +230,28 @@ TEST(ContactAreaScene, PairsGiveTheSameResultOnOneThreadOrTwo) {
   EXPECT_EQ(a->stateHash(), b->stateHash());
 }
 
-// The sampler's rule: a listed pair of classes (either order) overrides the model; surfaces
-// without a class, or pairs not listed, keep it.
-TEST(ContactAreaScene, SamplerOptionsPickTheModelOfAPair) {
-  ContactAreaOptions o;
-  EXPECT_FALSE(o.anyContactArea());
-  o.surface_class[{0, 0}] = 0;
-  o.surface_class[{1, -1}] = 1;
-  o.surface_class[{2, 0}] = 2;
-  o.pair_model[{0, 1}] = FrictionModel::ContactArea;
-  EXPECT_TRUE(o.anyContactArea());
-  EXPECT_EQ(o.modelFor(0, 0, 1, 0), FrictionModel::ContactArea);
-  EXPECT_EQ(o.modelFor(1, 3, 0, 0), FrictionModel::ContactArea);
-  EXPECT_EQ(o.modelFor(2, 0, 0, 0), FrictionModel::Paper);
-  EXPECT_EQ(o.modelFor(3, 0, 0, 0), FrictionModel::Paper);
+// The one rule of a contact's model: a listed pair of materials (either order) overrides the
+// default; surfaces without a material name, or pairs not listed, keep it.
+TEST(ContactAreaScene, ModelSettingsPickTheModelOfAPair) {
+  const auto named = [](const std::string& material) {
+    Surface s;
+    s.source.material = material;
+    return s;
+  };
+  const Surface concrete = named("concrete"), plaster = named("plaster"), oak = named("oak"),
+                none = named("");
+  FrictionModelSettings o;
+  EXPECT_FALSE(o.uses(FrictionModel::ContactArea));
+  o.setPair("plaster", "concrete", FrictionModel::ContactArea);
+  EXPECT_TRUE(o.uses(FrictionModel::ContactArea));
+  EXPECT_EQ(o.modelFor(concrete, plaster), FrictionModel::ContactArea);
+  EXPECT_EQ(o.modelFor(plaster, concrete), FrictionModel::ContactArea);
+  EXPECT_EQ(o.modelFor(oak, concrete), FrictionModel::Paper);
+  EXPECT_EQ(o.modelFor(none, plaster), FrictionModel::Paper);
   o.model = FrictionModel::ContactArea;
-  o.pair_model[{0, 2}] = FrictionModel::Paper;
-  EXPECT_EQ(o.modelFor(0, 0, 2, 0), FrictionModel::Paper);
-  EXPECT_EQ(o.modelFor(3, 0, 0, 0), FrictionModel::ContactArea);
+  o.setPair("concrete", "oak", FrictionModel::Paper);
+  EXPECT_EQ(o.modelFor(oak, concrete), FrictionModel::Paper);
+  EXPECT_EQ(o.modelFor(none, concrete), FrictionModel::ContactArea);
 }
 
 TEST(ContactAreaScene, PairsAndInlineMechanicalValuesAreWrittenBack) {
@@ -357,7 +365,7 @@ TEST(ContactAreaScene, BadPairsAndInlineValuesAreClearErrors) {
   j = pairsJson("paper", true);
   j["settings"]["friction_provider"] = "cone";
   const std::string what = errorOf(j);
-  EXPECT_NE(what.find("/pairs/0/friction_model: contact_area needs friction_provider \"cpu\""),
+  EXPECT_NE(what.find("/pairs/0/friction_model: friction model contact_area reads the fragments"),
             std::string::npos)
       << what;
   // Inline values: unknown preset, value out of range, wrong type.

@@ -37,6 +37,10 @@ struct ContactFrictionSettings {
   FrictionSettings friction;  // N, mu0, mu_max, patch width w and size R, reuse
   // A name of `providers` (cpu, cone, constant, gl); the default is a World's and a scene's.
   std::string provider = kDefaultFrictionProvider;
+  // Which friction model each contact uses (a model other than the paper's needs a patch
+  // sampler; the contact-area model reads EngineContact::normal_force and each surface's
+  // mechanical values). dt is ignored: the engine gives forces.
+  FrictionModelSettings models;
   FrameSettings frame;  // SPEC 5; Auto uses the objects' velocities
   int threads = 1;      // 0 = every core, 1 = the calling thread (as WorldSettings)
 };
@@ -70,6 +74,9 @@ struct EngineContact {
   // Identity that persists while the contact does (matches patch samples across steps, and
   // remembers the sense it slid); 0 = none.
   uint64_t key = 0;
+  // The normal force the engine's solver last gave this contact (N, >= 0), which the
+  // contact-area model's real area depends on; 0: unknown (a new contact), taken as light.
+  double normal_force = 0.0;
 };
 
 // What a contact gets back.

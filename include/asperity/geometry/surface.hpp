@@ -3,8 +3,10 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 
+#include "asperity/contact_area/mechanical.hpp"
 #include "asperity/diagnostics.hpp"
 #include "asperity/texture/color_image.hpp"
 #include "asperity/texture/generators.hpp"
@@ -53,6 +55,10 @@ struct Surface {
   // An asset's base colour texture, which the renderer multiplies base_color by (display only;
   // it follows the mesh's UVs). Null: none.
   std::shared_ptr<const ColorImage> base_color_texture;
+  // The material's elastic and plastic values, which the contact-area friction model reads
+  // (friction/friction_model.hpp); a scene fills them from the surface's or its material's
+  // "mechanical". None: a contact on it cannot use that model.
+  std::optional<Mechanical> mechanical;
 };
 
 // The normal map `source` names, read or generated; null when it names none. Paths are used as

@@ -12,6 +12,7 @@
 
 #include "asperity/collision/contact.hpp"
 #include "asperity/dynamics/body.hpp"
+#include "asperity/friction/friction_model.hpp"
 #include "asperity/sampler/friction_settings.hpp"
 
 namespace asperity {
@@ -23,6 +24,15 @@ inline constexpr const char* kDefaultFrictionProvider = "cone";
 class ThreadPool;   // the world's worker threads (internal)
 class StateReader;  // asperity/math/state_stream.hpp
 class StateWriter;
+
+// A provider's figures for its last call, split as the paper's Table 1 does.
+struct ProviderStats {
+  double patch_ms = 0.0;      // finding the patches' fragments (CPU time summed over threads)
+  double averaging_ms = 0.0;  // reducing them to coefficients
+  int sampled = 0;            // contacts sampled afresh
+  int reused = 0;  // contacts that kept an earlier sample (FrictionSettings::reuse_pixels)
+  int passes = 0;  // device passes (the OpenGL sampler's atlas fills)
+};
 
 class FrictionProvider {
  public:
@@ -44,17 +54,18 @@ class FrictionProvider {
     computeCoefficients(bodies, contacts, settings);
   }
   virtual void finishCoefficients() {}
+  // Which friction model each contact uses (friction/friction_model.hpp). Patch samplers serve
+  // every model; a provider without patches serves the paper's only and throws asperity::Error
+  // naming itself for settings that ask for another.
+  virtual void setFrictionModels(const FrictionModelSettings& models);
   // True when the coefficients depend on each contact's load: the world then gives every
   // contact last step's normal impulse (Contact::lambda_n) before computeCoefficients. Finding
   // them is a search per contact, so a provider that ignores the load says no.
   virtual bool readsNormalLoads() const { return false; }
   // True when startCoefficients returns before the work is done, so that overlapping pays.
   virtual bool runsAsynchronously() const { return false; }
-  // Time spent in the last call, split as the paper's Table 1 does (ms).
-  virtual double lastPatchTimeMs() const { return 0.0; }
-  virtual double lastAveragingTimeMs() const { return 0.0; }
-  // Contacts of the last call that kept an earlier sample (FrictionSettings::reuse_pixels).
-  virtual int lastReusedCount() const { return 0; }
+  // The figures of the last call.
+  virtual ProviderStats lastStats() const { return {}; }
   // Forgets what earlier calls left behind (kept samples), as in a new provider.
   virtual void forgetHistory() {}
   // What earlier calls left for the next one (kept samples), saved and restored bit for bit

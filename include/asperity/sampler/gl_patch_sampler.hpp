@@ -30,7 +30,7 @@ struct GlSamplerOptions {
   bool use_current_context = false;
 };
 
-class GlPatchSampler : public FrictionProvider {
+class GlPatchSampler : public PatchSampler {
  public:
   // Creates a headless context (gl/context.hpp) unless use_current_context. Throws
   // asperity::Error when no OpenGL 4.3 context is available or the options are bad.
@@ -51,19 +51,11 @@ class GlPatchSampler : public FrictionProvider {
   // The triangles are collected and the read-back sums finished on `pool`'s threads (the same
   // bits on any count); GL calls stay on the calling thread.
   void setThreadPool(const ThreadPool* pool) override;
-  double lastPatchTimeMs() const override;
-  double lastAveragingTimeMs() const override;
-  // Patch coherence as the cpu sampler's (FrictionSettings::reuse_pixels): contacts whose
-  // surfaces barely moved keep their sample and are not rendered.
-  int lastReusedCount() const override;
-  void forgetHistory() override;
-  void saveHistory(StateWriter& out) const override;
-  void loadHistory(StateReader& in) override;
-
+  // Patch times as the CPU sampler's, passes (atlas fills) and the contacts that kept their
+  // sample (PatchSampler): those are not rendered.
+  ProviderStats lastStats() const override;
   // GL_RENDERER of the context in use, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
   std::string renderer() const;
-  // Passes of the last call (atlas fills).
-  int lastPassCount() const;
 
  private:
   struct Impl;

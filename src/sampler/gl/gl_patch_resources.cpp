@@ -79,6 +79,43 @@ void Atlas::beginSubPass(int s) {
   glClearBufferfv(GL_DEPTH, 0, &far);
 }
 
+void FragmentAtlas::ensure(int size) {
+  if (size == size_) return;
+  size_ = size;
+  fragments_ = std::make_unique<gl::Texture>();
+  setupTexture(*fragments_, GL_CLAMP_TO_EDGE, GL_NEAREST);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, size, size, 0, GL_RGBA, GL_FLOAT, nullptr);
+  depth_ = std::make_unique<gl::Renderbuffer>();
+  glBindRenderbuffer(GL_RENDERBUFFER, *depth_);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT32F, size, size);
+  framebuffer_ = std::make_unique<gl::Framebuffer>();
+  glBindFramebuffer(GL_FRAMEBUFFER, *framebuffer_);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, *fragments_, 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, *depth_);
+  gl::checkFramebufferComplete("gl sampler fragment atlas");
+  gl::checkGlError("gl sampler fragment atlas allocation");
+}
+
+void FragmentAtlas::begin() {
+  glBindFramebuffer(GL_FRAMEBUFFER, *framebuffer_);
+  const GLenum buffer = GL_COLOR_ATTACHMENT0;
+  glDrawBuffers(1, &buffer);
+  glViewport(0, 0, size_, size_);
+  const GLfloat none[4] = {0, 0, 0, kNoFragment};
+  glClearBufferfv(GL_COLOR, 0, none);
+  const GLfloat far = 1.0f;
+  glClearBufferfv(GL_DEPTH, 0, &far);
+}
+
+void FragmentAtlas::read(int rows, std::vector<float>& out) const {
+  out.resize(static_cast<size_t>(size_) * static_cast<size_t>(rows) * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, *framebuffer_);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, size_, rows, GL_RGBA, GL_FLOAT, out.data());
+  gl::checkGlError("gl sampler fragment read-back");
+}
+
 void Readback::start(const Atlas& atlas, Programs& programs, const SumLayout& layout) {
   bytes_ = static_cast<size_t>(layout.contacts) * kSumLanes * layout.stride() * sizeof(float);
   if (!buffer_ || capacity_ < bytes_) {
@@ -141,8 +178,7 @@ Readback::~Readback() {
   if (fence_ != nullptr) glDeleteSync(fence_);
 }
 
-GLuint TextureCache::normalMap(const std::shared_ptr<const NormalMap>& map,
-                               TexelReading reading) {
+GLuint TextureCache::normalMap(const std::shared_ptr<const NormalMap>& map, TexelReading reading) {
   auto it = entries_.find({map.get(), reading});
   if (it != entries_.end()) return it->second.texture;
   // First use: the unit vectors as RGB32F (rows bottom-up, as NormalMap stores them).
@@ -169,6 +205,18 @@ GLuint TextureCache::mask(const std::shared_ptr<const GainMask>& mask, TexelRead
   return e.texture;
 }
 
+GLuint TextureCache::heights(const HeightMap& heights) {
+  auto it = entries_.find({&heights, TexelReading::Bilinear});
+  if (it != entries_.end()) return it->second.texture;
+  Entry& e = entries_[{&heights, TexelReading::Bilinear}];
+  setupTexture(e.texture, GL_REPEAT, GL_LINEAR);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, heights.width, heights.height, 0, GL_RED, GL_FLOAT,
+               heights.values.data());
+  gl::checkGlError("gl sampler height upload");
+  return e.texture;
+}
+
 const gl::Program& Programs::get(int groups) {
   auto it = programs_.find(groups);
   if (it != programs_.end()) return it->second;
@@ -186,15 +234,14 @@ const gl::Program& Programs::get(int groups) {
 const gl::Program& Programs::sum(int groups) {
   auto it = sums_.find(groups);
   if (it != sums_.end()) return it->second;
-  const std::string source = "#version 430 core\n#define GROUPS " + std::to_string(groups) +
-                             "\n" + std::string(gl_shaders::patch_average_comp);
+  const std::string source = "#version 430 core\n#define GROUPS " + std::to_string(groups) + "\n" +
+                             std::string(gl_shaders::patch_average_comp);
   gl::Program program("gl sampler sums (" + std::to_string(groups) + " groups)",
                       {{GL_COMPUTE_SHADER, source}});
   // Its texture units, fixed: the coverage on 0, the groups' targets on 1.. (Readback::start).
   program.use();
   program.set("u_coverage", 0);
-  for (int g = 0; g < groups; ++g)
-    program.set(("u_mu[" + std::to_string(g) + "]").c_str(), 1 + g);
+  for (int g = 0; g < groups; ++g) program.set(("u_mu[" + std::to_string(g) + "]").c_str(), 1 + g);
   return sums_.emplace(groups, std::move(program)).first->second;
 }
 

@@ -13,6 +13,7 @@
 
 #include "asperity/geometry/surface.hpp"
 #include "asperity/sampler/friction_provider.hpp"
+#include "asperity/texture/height_map.hpp"
 #include "gl/objects.hpp"
 #include "gl/shader.hpp"
 
@@ -51,12 +52,31 @@ class Atlas {
   std::vector<gl::Framebuffer> framebuffers_;
 };
 
+// The atlas of a pass whose fragments come back whole (the program of 0 groups): per pixel
+// (g_t, g_b, height, depth key) in RGBA32F, a depth key of kNoFragment where nothing was drawn.
+class FragmentAtlas {
+ public:
+  static constexpr float kNoFragment = -3.0e38f;
+  void ensure(int size);
+  int size() const { return size_; }
+  // Binds its frame buffer and clears it.
+  void begin();
+  // Rows [0, rows) of the atlas as rendered, 4 floats a pixel, into `out`.
+  void read(int rows, std::vector<float>& out) const;
+
+ private:
+  int size_ = 0;
+  std::unique_ptr<gl::Texture> fragments_;
+  std::unique_ptr<gl::Renderbuffer> depth_;
+  std::unique_ptr<gl::Framebuffer> framebuffer_;
+};
+
 // What one pass sums on the GPU (patch_average.comp.glsl).
 struct SumLayout {
-  int contacts = 0;     // tiles 2c and 2c + 1 of the atlas, c < contacts
-  int resolution = 0;   // R
-  int directions = 0;   // N
-  float scale = 1.0f;   // mu per unit of the targets (mu_max for RGBA8)
+  int contacts = 0;    // tiles 2c and 2c + 1 of the atlas, c < contacts
+  int resolution = 0;  // R
+  int directions = 0;  // N
+  float scale = 1.0f;  // mu per unit of the targets (mu_max for RGBA8)
   // Floats per lane: |P| of its rows, N sums of surface A, N of surface B; kSumLanes lanes a
   // contact.
   size_t stride() const { return 1 + 2 * static_cast<size_t>(directions); }
@@ -90,6 +110,9 @@ class TextureCache {
   // Each texture filtered as `reading` asks: GL_NEAREST (one texel a facet) or GL_LINEAR.
   GLuint normalMap(const std::shared_ptr<const NormalMap>& map, TexelReading reading);
   GLuint mask(const std::shared_ptr<const GainMask>& mask, TexelReading reading);
+  // A surface's heights (bilinear, as the CPU sampler reads them); the caller keeps `heights`
+  // alive while the cache lives.
+  GLuint heights(const HeightMap& heights);
 
  private:
   struct Entry {

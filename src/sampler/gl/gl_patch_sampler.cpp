@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -18,9 +19,12 @@
 #include "asperity/friction/directions.hpp"
 #include "asperity/gl/context.hpp"
 #include "parallel/thread_pool.hpp"
+#include "sampler/gl/gl_patch_fragments.hpp"
 #include "sampler/gl/gl_patch_resources.hpp"
+#include "sampler/gl/gl_saved_state.hpp"
+#include "sampler/models/friction_models.hpp"
 #include "sampler/patch_common.hpp"
-#include "sampler/patch_reuse.hpp"
+#include "sampler/patch_heights.hpp"
 #include "sampler/patch_triangles.hpp"
 
 namespace asperity {
@@ -28,9 +32,6 @@ namespace asperity {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// The clip distances of patch.vert.glsl that keep each triangle inside its tile.
-constexpr int kTileClipPlanes = 4;
 
 double msSince(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
@@ -40,7 +41,7 @@ double msSince(Clock::time_point t) {
 // become GL names (map, mask) on the calling thread, after the triangles are collected.
 struct Draw {
   const Surface* surface = nullptr;
-  GLuint map = 0, mask = 0;
+  GLuint map = 0, mask = 0, heights = 0;
   GLint first = 0;
   GLsizei count = 0;
 };
@@ -55,7 +56,7 @@ struct TileVertex {
 
 // The draws of one material, rendered by one glMultiDrawArrays.
 struct Batch {
-  GLuint map = 0, mask = 0;
+  GLuint map = 0, mask = 0, heights = 0;
   size_t first = 0, count = 0;  // into Impl::firsts and Impl::counts
 };
 
@@ -63,6 +64,9 @@ struct Batch {
 struct PassContact {
   Contact* contact = nullptr;
   PatchGains gains;
+  const models::FrictionModelVariant* model = nullptr;
+  std::array<const Surface*, 2> surfaces{};  // each side's first shape's (ModelInputs)
+  std::array<int, 2> shapes{};
 };
 
 // The triangles of a run of a pass's contacts, collected by one thread: its draws' firsts count
@@ -77,47 +81,6 @@ struct Chunk {
 // Contacts per chunk: enough work to pay for a task, few enough to spread a pass.
 constexpr size_t kChunkContacts = 32;
 
-// The caller's GL state that a pass changes (for use_current_context), restored afterwards.
-struct SavedState {
-  GLint draw_fbo = 0, read_fbo = 0, program = 0, vao = 0, array_buffer = 0, active_texture = 0;
-  GLint viewport[4] = {0, 0, 0, 0};
-  GLboolean depth_test = GL_FALSE, cull_face = GL_FALSE, blend = GL_FALSE;
-  GLboolean clip[kTileClipPlanes] = {};
-  GLint depth_func = GL_LESS;
-
-  static SavedState capture() {
-    SavedState s;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &s.draw_fbo);
-    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &s.read_fbo);
-    glGetIntegerv(GL_CURRENT_PROGRAM, &s.program);
-    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &s.vao);
-    glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &s.array_buffer);
-    glGetIntegerv(GL_ACTIVE_TEXTURE, &s.active_texture);
-    glGetIntegerv(GL_VIEWPORT, s.viewport);
-    glGetIntegerv(GL_DEPTH_FUNC, &s.depth_func);
-    s.depth_test = glIsEnabled(GL_DEPTH_TEST);
-    s.cull_face = glIsEnabled(GL_CULL_FACE);
-    s.blend = glIsEnabled(GL_BLEND);
-    for (int i = 0; i < kTileClipPlanes; ++i) s.clip[i] = glIsEnabled(GL_CLIP_DISTANCE0 + i);
-    return s;
-  }
-  void restore() const {
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(draw_fbo));
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<GLuint>(read_fbo));
-    glUseProgram(static_cast<GLuint>(program));
-    glBindVertexArray(static_cast<GLuint>(vao));
-    glBindBuffer(GL_ARRAY_BUFFER, static_cast<GLuint>(array_buffer));
-    glActiveTexture(static_cast<GLenum>(active_texture));
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    glDepthFunc(static_cast<GLenum>(depth_func));
-    auto set = [](GLenum cap, GLboolean on) { on ? glEnable(cap) : glDisable(cap); };
-    set(GL_DEPTH_TEST, depth_test);
-    set(GL_CULL_FACE, cull_face);
-    set(GL_BLEND, blend);
-    for (int i = 0; i < kTileClipPlanes; ++i) set(GL_CLIP_DISTANCE0 + i, clip[i]);
-  }
-};
-
 }  // namespace
 
 struct GlPatchSampler::Impl {
@@ -126,6 +89,13 @@ struct GlPatchSampler::Impl {
   std::unique_ptr<gl::GlContext> context;  // declared first: destroyed last
   glpatch::Atlas atlas;
   std::array<glpatch::Readback, 2> readbacks;
+  glpatch::FragmentAtlas fragment_atlas;  // passes whose fragments come back whole
+  patch::HeightCache heights;             // surface heights, for models that read them
+  std::vector<float> fragment_pixels;     // a fragment pass's read-back
+  glpatch::FragmentReduction reduction;   // its contacts' models, run here
+  // This call's contacts by their model's needs: summed on the device, or read back whole.
+  std::vector<Contact*> summed, whole;
+  std::vector<const models::FrictionModelVariant*> whole_models;
   std::array<std::vector<PassContact>, 2> pass_contacts;
   glpatch::TextureCache textures;
   glpatch::Programs programs;
@@ -143,14 +113,10 @@ struct GlPatchSampler::Impl {
   int max_draw_buffers = 8;
   double patch_ms = 0.0, averaging_ms = 0.0;
   int passes = 0;
-  patch::PatchReuse reuse;        // earlier samples (patch coherence)
-  std::vector<Contact*> sampled;  // this call's contacts that are rendered
-  int reused = 0;
   // A call between startCoefficients and finishCoefficients.
   struct InFlight {
     bool active = false;
-    SavedState saved;
-    std::vector<uint8_t> kept;
+    glpatch::SavedState saved;
     std::span<const Body> bodies;
     std::span<Contact> contacts;
     FrictionSettings settings;
@@ -161,16 +127,44 @@ struct GlPatchSampler::Impl {
   // Drops a call that was started and never finished (its caller threw in between): its
   // reads are waited for and discarded, the caller's GL state restored.
   void abandon();
+  // The triangles and draws of a pass; `fragments`: with the height textures of its surfaces.
   void collect(std::span<const Body> bodies, std::span<Contact* const> contacts,
-               const FrictionSettings& settings, std::vector<PassContact>& out);
+               const FrictionSettings& settings, std::vector<PassContact>& out,
+               bool fragments = false);
   void collectChunk(std::span<const Body> bodies, std::span<Contact* const> contacts,
                     size_t first_contact, const FrictionSettings& settings, Chunk& chunk,
                     std::span<PassContact> out);
   void upload(GLuint buffer, size_t vertex_size,
               const std::function<const void*(const Chunk&)>& data) const;
   void batchByMaterial();
+  void setPatchUniforms(const gl::Program& program, const FrictionSettings& settings) const;
+  // This call's contacts into summed and whole (with their models), by what their model needs.
+  template <class ModelOf>
+  void splitByModel(std::span<Contact* const> contacts, const ModelOf& model_of) {
+    summed.clear();
+    whole.clear();
+    whole_models.clear();
+    for (Contact* c : contacts) {
+      const models::FrictionModelVariant& model = model_of(*c);
+      if (model.finish_sums != nullptr) {
+        summed.push_back(c);
+      } else {
+        whole.push_back(c);
+        whole_models.push_back(&model);
+      }
+    }
+  }
+  // A pass's upload and GL state before its draws, and the state after them.
+  void beginDraw();
+  void endDraw(const char* what);
+  void drawBatches(const gl::Program& program);
   void render(const FrictionSettings& settings);
   void average(int slot, const FrictionSettings& settings);
+  // The contacts whose model reads their fragments whole: rendered, read back and reduced on
+  // this thread, pass after pass.
+  void sampleFragments(std::span<const Body> bodies, std::span<Contact* const> contacts,
+                       std::span<const models::FrictionModelVariant* const> contact_models,
+                       const FrictionSettings& settings, double dt);
 };
 
 void GlPatchSampler::Impl::setupVertexArray() {
@@ -206,8 +200,8 @@ void GlPatchSampler::Impl::setupVertexArray() {
 }
 
 void GlPatchSampler::Impl::collect(std::span<const Body> bodies, std::span<Contact* const> contacts,
-                                   const FrictionSettings& settings,
-                                   std::vector<PassContact>& out) {
+                                   const FrictionSettings& settings, std::vector<PassContact>& out,
+                                   bool fragments) {
   // The triangles of runs of contacts on the pool (the meshes they look up built first, here),
   // then joined in contact order: the same buffer and draws as one thread makes.
   if (pool) {
@@ -232,6 +226,8 @@ void GlPatchSampler::Impl::collect(std::span<const Body> bodies, std::span<Conta
       const auto& map = d.surface->normal_map;
       d.map = map && !map->empty() ? textures.normalMap(map, settings.texel_reading) : 0;
       d.mask = d.surface->mask ? textures.mask(d.surface->mask, settings.texel_reading) : 0;
+      const HeightMap* h = fragments && map ? heights.find(map.get()) : nullptr;
+      d.heights = h != nullptr ? textures.heights(*h) : 0;
       d.first += static_cast<GLint>(chunk.base);
       draws.push_back(d);
     }
@@ -267,11 +263,15 @@ void GlPatchSampler::Impl::collectChunk(std::span<const Body> bodies,
             s == 0 ? -1.0f : 1.0f,
             static_cast<float>(volume.half_depth)};
         chunk.tiles.resize(chunk.vertices.size(), tv);
-        chunk.draws.push_back({&shape.surface, 0, 0, static_cast<GLint>(first),
+        chunk.draws.push_back({&shape.surface, 0, 0, 0, static_cast<GLint>(first),
                                static_cast<GLsizei>(chunk.vertices.size() - first)});
       }
     }
-    out[i] = {&contact, patch::gainsOf(ranges[0], ranges[1], settings.mu0)};
+    out[i] = {&contact,
+              patch::gainsOf(ranges[0], ranges[1], settings.mu0),
+              out[i].model,
+              {patch::firstSurface(ranges[0]), patch::firstSurface(ranges[1])},
+              {ranges[0].first, ranges[1].first}};
   }
 }
 
@@ -294,22 +294,55 @@ void GlPatchSampler::Impl::batchByMaterial() {
   order.resize(draws.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return std::pair(draws[a].map, draws[a].mask) < std::pair(draws[b].map, draws[b].mask);
+    return std::tuple(draws[a].map, draws[a].mask, draws[a].heights) <
+           std::tuple(draws[b].map, draws[b].mask, draws[b].heights);
   });
   batches.clear();
   firsts.clear();
   counts.clear();
   for (size_t i : order) {
     const Draw& d = draws[i];
-    if (batches.empty() || batches.back().map != d.map || batches.back().mask != d.mask)
-      batches.push_back({d.map, d.mask, firsts.size(), 0});
+    if (batches.empty() || batches.back().map != d.map || batches.back().mask != d.mask ||
+        batches.back().heights != d.heights)
+      batches.push_back({d.map, d.mask, d.heights, firsts.size(), 0});
     firsts.push_back(d.first);
     counts.push_back(d.count);
     ++batches.back().count;
   }
 }
 
-void GlPatchSampler::Impl::render(const FrictionSettings& settings) {
+void GlPatchSampler::Impl::setPatchUniforms(const gl::Program& program,
+                                            const FrictionSettings& settings) const {
+  program.set("u_half_width", static_cast<float>(0.5 * settings.patch_width));
+  program.set("u_pixel", static_cast<float>(settings.patch_width / settings.patch_resolution));
+  program.set("u_tile_pixels", static_cast<float>(settings.patch_resolution));
+  program.set("u_atlas_pixels", static_cast<float>(atlas.size()));
+  program.set("u_mu_max", settings.mu_max);
+  program.set("u_texel_nudge",
+              settings.texel_reading == TexelReading::Nearest ? patch::kNearestTexelNudge : 0.0f);
+  program.set("u_scale", atlas.floatTargets() ? 1.0f : 1.0f / settings.mu_max);
+  program.set("u_normal_map", 0);
+  program.set("u_mask", 1);
+  program.set("u_heights", 2);
+}
+
+void GlPatchSampler::Impl::drawBatches(const gl::Program& program) {
+  for (const Batch& batch : batches) {
+    program.set("u_has_map", batch.map != 0 ? 1 : 0);
+    program.set("u_has_mask", batch.mask != 0 ? 1 : 0);
+    program.set("u_has_heights", batch.heights != 0 ? 1 : 0);
+    const GLuint units[3] = {batch.map, batch.mask, batch.heights};
+    for (GLenum u = 0; u < 3; ++u) {
+      glActiveTexture(GL_TEXTURE0 + u);
+      glBindTexture(GL_TEXTURE_2D, units[u]);
+    }
+    glMultiDrawArrays(GL_TRIANGLES, firsts.data() + batch.first, counts.data() + batch.first,
+                      static_cast<GLsizei>(batch.count));
+  }
+  glActiveTexture(GL_TEXTURE0);
+}
+
+void GlPatchSampler::Impl::beginDraw() {
   // Upload this pass's triangles and their tiles.
   glBindVertexArray(*vao);
   upload(*vbo, sizeof(patch::PatchVertex), [](const Chunk& c) { return c.vertices.data(); });
@@ -319,7 +352,17 @@ void GlPatchSampler::Impl::render(const FrictionSettings& settings) {
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);  // back faces are already discarded (patch_triangles)
   glDisable(GL_BLEND);
-  for (int i = 0; i < kTileClipPlanes; ++i) glEnable(GL_CLIP_DISTANCE0 + i);
+  for (int i = 0; i < glpatch::kTileClipPlanes; ++i) glEnable(GL_CLIP_DISTANCE0 + i);
+}
+
+void GlPatchSampler::Impl::endDraw(const char* what) {
+  for (int i = 0; i < glpatch::kTileClipPlanes; ++i) glDisable(GL_CLIP_DISTANCE0 + i);
+  glBindVertexArray(0);
+  gl::checkGlError(what);
+}
+
+void GlPatchSampler::Impl::render(const FrictionSettings& settings) {
+  beginDraw();
   const std::vector<Vec2> dirs = sampleDirections(settings.directions);
   // Each sub-pass renders every batch with its share of the direction groups.
   for (int s = 0; s < atlas.subPasses(); ++s) {
@@ -335,31 +378,47 @@ void GlPatchSampler::Impl::render(const FrictionSettings& settings) {
           static_cast<float>(dirs[static_cast<size_t>(4 * first_group + k)].y());
     }
     glUniform2fv(program.location("u_directions"), 4 * groups, d.data());
-    program.set("u_half_width", static_cast<float>(0.5 * settings.patch_width));
-    program.set("u_pixel", static_cast<float>(settings.patch_width / settings.patch_resolution));
-    program.set("u_tile_pixels", static_cast<float>(settings.patch_resolution));
-    program.set("u_atlas_pixels", static_cast<float>(atlas.size()));
-    program.set("u_mu_max", settings.mu_max);
-    program.set("u_texel_nudge",
-                settings.texel_reading == TexelReading::Nearest ? patch::kNearestTexelNudge : 0.0f);
-    program.set("u_scale", atlas.floatTargets() ? 1.0f : 1.0f / settings.mu_max);
-    program.set("u_normal_map", 0);
-    program.set("u_mask", 1);
+    setPatchUniforms(program, settings);
     atlas.beginSubPass(s);  // the whole atlas is the viewport
-    for (const Batch& batch : batches) {
-      program.set("u_has_map", batch.map != 0 ? 1 : 0);
-      program.set("u_has_mask", batch.mask != 0 ? 1 : 0);
-      glActiveTexture(GL_TEXTURE0);
-      glBindTexture(GL_TEXTURE_2D, batch.map);
-      glActiveTexture(GL_TEXTURE1);
-      glBindTexture(GL_TEXTURE_2D, batch.mask);
-      glMultiDrawArrays(GL_TRIANGLES, firsts.data() + batch.first, counts.data() + batch.first,
-                        static_cast<GLsizei>(batch.count));
-    }
+    drawBatches(program);
   }
-  for (int i = 0; i < kTileClipPlanes; ++i) glDisable(GL_CLIP_DISTANCE0 + i);
-  glBindVertexArray(0);
-  gl::checkGlError("gl sampler render");
+  endDraw("gl sampler render");
+}
+
+void GlPatchSampler::Impl::sampleFragments(
+    std::span<const Body> bodies, std::span<Contact* const> contacts,
+    std::span<const models::FrictionModelVariant* const> contact_models,
+    const FrictionSettings& settings, double dt) {
+  const int r = settings.patch_resolution, per_row = atlas.size() / r;
+  const size_t per_pass = static_cast<size_t>(per_row * per_row / 2);
+  for (const Contact* c : contacts) heights.prepare(bodies, *c);
+  fragment_atlas.ensure(atlas.size());
+  const std::vector<Vec2> dirs = sampleDirections(settings.directions);
+  std::vector<PassContact>& pass = pass_contacts[0];
+  for (size_t first = 0; first < contacts.size(); first += per_pass) {
+    const size_t count = std::min(per_pass, contacts.size() - first);
+    pass.resize(count);
+    for (size_t k = 0; k < count; ++k) pass[k].model = contact_models[first + k];
+    collect(bodies, contacts.subspan(first, count), settings, pass, true);
+    beginDraw();
+    const gl::Program& program = programs.get(0);
+    program.use();
+    setPatchUniforms(program, settings);
+    fragment_atlas.begin();
+    drawBatches(program);
+    endDraw("gl sampler fragment render");
+    const int tiles = static_cast<int>(2 * count);
+    fragment_atlas.read(std::min(atlas.size(), ((tiles - 1) / per_row + 1) * r), fragment_pixels);
+    ++passes;
+    const Clock::time_point t0 = Clock::now();
+    for (size_t k = 0; k < count; ++k) {
+      const models::ModelInputs in{dirs, pass[k].gains,    settings.mu_max,
+                                   dt,   pass[k].surfaces, pass[k].shapes};
+      reduction.reduce(fragment_pixels, atlas.size(), r, static_cast<int>(2 * k), *pass[k].model,
+                       in, settings.patch_width, *pass[k].contact);
+    }
+    averaging_ms += msSince(t0);
+  }
 }
 
 void GlPatchSampler::Impl::average(int slot, const FrictionSettings& settings) {
@@ -383,9 +442,12 @@ void GlPatchSampler::Impl::average(int slot, const FrictionSettings& settings) {
         sums_b[k] += sums[1 + n + k];
       }
     }
-    patch::finishContact(*contacts[c].contact, std::span<const double>(sums_a.data(), n),
-                         std::span<const double>(sums_b.data(), n), static_cast<int>(count),
-                         contacts[c].gains);
+    models::ModelInputs in;
+    in.gains = contacts[c].gains;
+    in.mu_max = settings.mu_max;
+    contacts[c].model->finish_sums(std::span<const double>(sums_a.data(), n),
+                                   std::span<const double>(sums_b.data(), n),
+                                   static_cast<int>(count), in, *contacts[c].contact);
   });
   rb.unmap();
   averaging_ms += msSince(t0);
@@ -410,30 +472,12 @@ void GlPatchSampler::setThreadPool(const ThreadPool* pool) {
   impl_->pool = pool;
 }
 
-double GlPatchSampler::lastPatchTimeMs() const {
-  return impl_->patch_ms;
-}
-double GlPatchSampler::lastAveragingTimeMs() const {
-  return impl_->averaging_ms;
-}
-int GlPatchSampler::lastPassCount() const {
-  return impl_->passes;
-}
-
-int GlPatchSampler::lastReusedCount() const {
-  return impl_->reused;
-}
-
-void GlPatchSampler::forgetHistory() {
-  impl_->reuse = patch::PatchReuse();
-}
-
-void GlPatchSampler::saveHistory(StateWriter& out) const {
-  impl_->reuse.save(out);
-}
-
-void GlPatchSampler::loadHistory(StateReader& in) {
-  impl_->reuse.load(in);
+ProviderStats GlPatchSampler::lastStats() const {
+  ProviderStats stats = stats_;
+  stats.patch_ms = impl_->patch_ms;
+  stats.averaging_ms = impl_->averaging_ms;
+  stats.passes = impl_->passes;
+  return stats;
 }
 
 std::string GlPatchSampler::renderer() const {
@@ -474,7 +518,7 @@ void GlPatchSampler::startCoefficients(std::span<const Body> bodies, std::span<C
                 std::to_string(im.options.atlas_size) + ")");
   }
   const Clock::time_point start = Clock::now();
-  im.call.saved = SavedState::capture();
+  im.call.saved = glpatch::SavedState::capture();
   im.call.active = true;
   im.call.bodies = bodies;
   im.call.contacts = contacts;
@@ -485,20 +529,24 @@ void GlPatchSampler::startCoefficients(std::span<const Body> bodies, std::span<C
                   im.max_draw_buffers);
   const int per_row = im.atlas.size() / r;
   const size_t per_pass = static_cast<size_t>(per_row * per_row / 2);
-  // Contacts whose earlier sample still holds keep it; the others are rendered.
-  im.reuse.reuse(bodies, contacts, settings, im.call.kept);
-  im.sampled.clear();
-  for (size_t i = 0; i < contacts.size(); ++i)
-    if (!im.call.kept[i]) im.sampled.push_back(&contacts[i]);
-  im.reused = static_cast<int>(contacts.size() - im.sampled.size());
-  const std::span<Contact* const> sampled(im.sampled);
+  // Contacts whose earlier sample still holds keep it; the others are rendered: summed on the
+  // device where their model needs only P's sums, else read back whole and reduced here.
+  im.splitByModel(
+      keepSamples(bodies, contacts, settings), [&](const Contact& c) -> const auto& {
+        return modelOf(bodies, c);
+      });
+  if (!im.whole.empty())
+    im.sampleFragments(bodies, im.whole, im.whole_models, settings, models().dt);
+  const std::span<Contact* const> sampled(im.summed);
   // Passes of at most per_pass contacts; pass p's read-back overlaps pass p + 1's rendering.
   for (size_t first = 0; first < sampled.size(); first += per_pass) {
     const int slot = im.passes % 2;
     if (im.readbacks[static_cast<size_t>(slot)].pending()) im.average(slot, settings);
     const size_t count = std::min(per_pass, sampled.size() - first);
-    im.collect(bodies, sampled.subspan(first, count), settings,
-               im.pass_contacts[static_cast<size_t>(slot)]);
+    std::vector<PassContact>& pass = im.pass_contacts[static_cast<size_t>(slot)];
+    pass.resize(count);
+    for (size_t k = 0; k < count; ++k) pass[k].model = &modelOf(bodies, *sampled[first + k]);
+    im.collect(bodies, sampled.subspan(first, count), settings, pass);
     im.render(settings);
     const glpatch::SumLayout layout{static_cast<int>(count), r, settings.directions,
                                     im.atlas.floatTargets() ? 1.0f : settings.mu_max};
@@ -522,7 +570,7 @@ void GlPatchSampler::finishCoefficients() {
   }
   im.call.saved.restore();
   im.call.active = false;
-  im.reuse.remember(im.call.bodies, im.call.contacts, im.call.kept);
+  rememberSamples(im.call.bodies, im.call.contacts);
   im.patch_ms = im.call.busy_ms + msSince(start) - im.averaging_ms;
 }
 

@@ -5,6 +5,9 @@
 
 #include <epoxy/gl.h>
 
+#include <cstdio>
+
+#include "asperity/contact_area/mechanical.hpp"
 #include "asperity/gl/context.hpp"
 #include "asperity/sampler/cpu_patch_sampler.hpp"
 #include "asperity/scene/gl_sampler_provider.hpp"
@@ -74,7 +77,7 @@ void expectAgreement(GlSamplerOptions options, int n, double tolerance) {
     }
   }
   if (options.atlas_size == 64) {
-    EXPECT_EQ(sampler.lastPassCount(), 5);  // 8 contacts per pass
+    EXPECT_EQ(sampler.lastStats().passes, 5);  // 8 contacts per pass
   }
 }
 
@@ -131,7 +134,7 @@ TEST(GlPatchSampler, ReusesTheSamplesOfContactsThatBarelyMoved) {
   for (size_t i = 0; i < contacts.size(); ++i) contacts[i].key = i + 1;  // matched by key
   GlPatchSampler sampler;
   sampler.computeCoefficients(scene.bodies, contacts, s);
-  EXPECT_EQ(sampler.lastReusedCount(), 0);
+  EXPECT_EQ(sampler.lastStats().reused, 0);
   // The contact points slide over both surfaces.
   const double pixel = s.patch_width / s.patch_resolution;
   std::vector<Contact> moved = contacts;
@@ -142,7 +145,7 @@ TEST(GlPatchSampler, ReusesTheSamplesOfContactsThatBarelyMoved) {
   FrictionSettings every = s;
   every.reuse_pixels = 0.0;
   CpuPatchSampler().computeCoefficients(scene.bodies, fresh, every);
-  EXPECT_EQ(sampler.lastReusedCount(), 20);
+  EXPECT_EQ(sampler.lastStats().reused, 20);
   for (size_t i = 0; i < moved.size(); ++i)
     for (int k = 0; k < 4; ++k)
       EXPECT_NEAR(moved[i].mu.mu[k], fresh[i].mu.mu[k], i % 2 == 0 ? 0.06 : kDefaultMuMax / 255.0)
@@ -150,7 +153,7 @@ TEST(GlPatchSampler, ReusesTheSamplesOfContactsThatBarelyMoved) {
   // Forgetting the history samples everything again.
   sampler.forgetHistory();
   sampler.computeCoefficients(scene.bodies, moved, s);
-  EXPECT_EQ(sampler.lastReusedCount(), 0);
+  EXPECT_EQ(sampler.lastStats().reused, 0);
 }
 
 TEST(GlPatchSampler, StartedCallFinishesWithTheNumbersOfOneCall) {
@@ -201,7 +204,7 @@ TEST(GlPatchSampler, CollectsAndAveragesOnThePoolWithTheBitsOfOneThread) {
   std::vector<Contact> one = corners(scene, 300), four = one;
   alone.computeCoefficients(scene.bodies, one, s);
   pooled.computeCoefficients(scene.bodies, four, s);
-  EXPECT_EQ(pooled.lastPassCount(), 3);
+  EXPECT_EQ(pooled.lastStats().passes, 3);
   for (size_t i = 0; i < one.size(); ++i) {
     EXPECT_GT(four[i].covered_pixels, 0) << "contact " << i;
     EXPECT_EQ(four[i].covered_pixels, one[i].covered_pixels) << "contact " << i;
@@ -273,6 +276,76 @@ TEST(GlPatchSampler, ReportsRendererAndRejectsBadAtlas) {
   GlSamplerOptions o;
   o.atlas_size = 8;
   EXPECT_THROW(GlPatchSampler bad(o), Error);
+}
+
+// The contact-area model reads each pixel's fragment, not P's sums: the GL sampler reads its
+// fragments back and gives the CPU sampler's coefficients. A rough acrylic plane (plaster, its
+// heights from the generator) under a flat steel box, at two loads, several contact points and
+// frame angles, and two textures.
+TEST(GlPatchSampler, ContactAreaModelGivesTheCpuSamplersNumbers) {
+  FrictionModelSettings area;
+  area.model = FrictionModel::ContactArea;
+  area.dt = 0.01;
+  CpuPatchSampler cpu;
+  GlPatchSampler gl;
+  cpu.setFrictionModels(area);
+  gl.setFrictionModels(area);
+  const FrictionSettings s = settings(8, 32, 0.02);
+  double worst = 0.0;
+  for (const uint64_t seed : {3u, 4u}) {
+    GeneratorSpec plaster;
+    plaster.name = "plaster";
+    plaster.size = 64;
+    plaster.seed = seed;
+    Body plane = planeBody(std::make_shared<NormalMap>(generateNormalMap(plaster)), 0.04, 1.5);
+    plane.shapes[0].surface.source.generator = plaster;
+    plane.shapes[0].surface.mechanical = findMechanical("acrylic");
+    Body box = boxBody(Vec3(0.1, 0.1, 0.1), {Vec3(0, 0, 0.1)}, nullptr, 0.1, 1.0);
+    box.shapes[0].surface.mechanical = findMechanical("steel");
+    const std::vector<Body> bodies{plane, box};
+    std::vector<Contact> contacts;
+    for (int i = 0; i < 6; ++i) {
+      Contact c = contactAt(Vec3(0.003 * i, -0.002 * i, 0.0), 1e-5, 0.4 * i);
+      c.lambda_n = (i % 2 == 0 ? 50.0 : 500.0) * area.dt;
+      contacts.push_back(c);
+    }
+    std::vector<Contact> on_gl = contacts, paper = contacts;
+    cpu.computeCoefficients(bodies, contacts, s);
+    gl.computeCoefficients(bodies, on_gl, s);
+    GlPatchSampler().computeCoefficients(bodies, paper, s);
+    for (size_t i = 0; i < contacts.size(); ++i) {
+      // The model ran: a part of P is in contact, and adhesion replaced mu0.
+      EXPECT_GT(contacts[i].covered_pixels, 0);
+      EXPECT_LT(contacts[i].covered_pixels, paper[i].covered_pixels);
+      EXPECT_EQ(on_gl[i].covered_pixels, contacts[i].covered_pixels) << "contact " << i;
+      for (size_t k = 0; k < 8; ++k) {
+        const double apart = std::abs(double(on_gl[i].mu.mu[k]) - double(contacts[i].mu.mu[k]));
+        worst = std::max(worst, apart / double(contacts[i].mu.mu[k]));
+      }
+    }
+  }
+  EXPECT_LT(worst, 0.01) << "largest relative difference of any direction";
+  std::printf("contact-area model, GL against CPU: largest relative difference %.2g\n", worst);
+  EXPECT_EQ(gl.lastStats().sampled, 6);
+}
+
+// A provider without patches serves the paper's model only, and says so.
+TEST(GlPatchSampler, ProvidersWithoutPatchesRefuseTheContactAreaModel) {
+  FrictionModelSettings area;
+  area.setPair("steel", "oak", FrictionModel::ContactArea);
+  FrictionProviders providers = FrictionProviders::builtIn();
+  for (const char* name : {"constant", "cone"}) {
+    try {
+      providers.make(name)->setFrictionModels(area);
+      FAIL() << name;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("friction model contact_area reads the fragments of "
+                                           "each patch: it needs a patch sampler"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  EXPECT_NO_THROW(providers.make("cpu")->setFrictionModels(area));
 }
 
 }  // namespace

@@ -3,7 +3,9 @@
 // tangent frame gives the meso normal in the contact frame,
 // then its ploughing vector g (ploughing.glsl) and mu_k = gain * max(0, g . d_k), scaled by
 // u_scale (1 / mu_max for RGBA8 targets, 1 for float targets). Target 0 marks coverage.
-// GROUPS (1..7) is defined by the program that includes this file.
+// GROUPS (1..7) is defined by the program that includes this file. GROUPS 0 writes the
+// fragments themselves for a friction model that reads more than P's sums: (g, the surface's
+// height at the fragment, its depth key) into one RGBA32F target, read back to the CPU.
 in vec2 v_uv;
 in vec3 v_tangent;
 in vec3 v_bitangent;
@@ -27,8 +29,15 @@ uniform float u_pixel;
 uniform float u_texel_nudge;
 uniform vec2 u_directions[28];  // this pass's directions, GROUPS x 4 used
 
+#if GROUPS == 0
+in float v_depth;
+uniform sampler2D u_heights;
+uniform bool u_has_heights;
+layout(location = 0) out vec4 o_fragment;
+#else
 layout(location = 0) out vec4 o_coverage;
 layout(location = 1) out vec4 o_mu0;
+#endif
 #if GROUPS > 1
 layout(location = 2) out vec4 o_mu1;
 #endif
@@ -79,8 +88,13 @@ void main() {
   if (u_has_mask) {
     gain = max(texture(u_mask, v_uv + u_texel_nudge / vec2(textureSize(u_mask, 0))).r, 0.0);
   }
+#if GROUPS == 0
+  float height = u_has_heights ? texture(u_heights, v_uv).r : 0.0;
+  o_fragment = vec4(gain * g, height, v_depth);
+#else
   o_coverage = vec4(1.0);
   o_mu0 = group(g, gain, 0);
+#endif
 #if GROUPS > 1
   o_mu1 = group(g, gain, 1);
 #endif

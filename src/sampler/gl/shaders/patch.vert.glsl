@@ -29,6 +29,7 @@ flat out vec4 v_edge1;
 flat out vec4 v_edge2;
 flat out vec2 v_tile_origin;
 flat out float v_side;
+out float v_depth;  // the CPU raster's depth key: z for B, -z for A
 
 void main() {
   vec2 footprint = a_position.xy / u_half_width;  // -1 .. 1 across the tile
@@ -41,6 +42,7 @@ void main() {
   gl_ClipDistance[3] = 1.0 + footprint.y;
   v_tile_origin = a_tile.xy;
   v_side = a_tile.z;
+  v_depth = a_tile.z * a_position.z;
   v_uv = a_uv;
   v_tangent = a_tangent;
   v_bitangent = a_bitangent;
